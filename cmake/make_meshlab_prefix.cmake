@@ -1,0 +1,15 @@
+# Run with cmake -P by the meshlab_prefix target (see MeshLabPrefix.cmake).
+file(MAKE_DIRECTORY "${PREFIX}/bin" "${PLUGIN_DIR}")
+# Copies, not symlinks: MeshLab finds its plugins relative to the real binary's path.
+foreach(program IN ITEMS "${MESHLAB}" "${MESHLABSERVER}")
+  get_filename_component(name "${program}" NAME)
+  file(COPY "${program}" DESTINATION "${PREFIX}/bin" FOLLOW_SYMLINK_CHAIN)
+endforeach()
+file(CREATE_LINK "${SYSTEM_DIR}/libmeshlab-common.so" "${PLUGIN_DIR}/../libmeshlab-common.so" SYMBOLIC)
+file(GLOB stock_plugins "${SYSTEM_DIR}/plugins/*.so")
+foreach(plugin IN LISTS stock_plugins)
+  get_filename_component(name "${plugin}" NAME)
+  if(NOT EXISTS "${PLUGIN_DIR}/${name}" OR IS_SYMLINK "${PLUGIN_DIR}/${name}")
+    file(CREATE_LINK "${plugin}" "${PLUGIN_DIR}/${name}" SYMBOLIC)
+  endif()
+endforeach()

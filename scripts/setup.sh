@@ -1,0 +1,101 @@
+#!/usr/bin/env bash
+# Installs everything pcskeleton needs on Debian bookworm, from Debian's packages only:
+#   - build tools and libraries (Qt5, Eigen, CGAL, SuiteSparse, GoogleTest),
+#   - MeshLab 2020.09 itself (its binaries and libmeshlab-common.so),
+#   - MeshLab's plugin headers and vcglib, from Debian's own source package, unpacked
+#     into deps/meshlab-src (Debian ships no MeshLab SDK package),
+#   - what the tests and the demo run with (Xvfb, xdotool, ImageMagick, matplotlib,
+#     libcgal-demo's real models).
+# Idempotent: a second run checks and returns in a second or two.
+# Runs as root (CI) or as a user with sudo.
+set -euo pipefail
+
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+SDK_DIR="$ROOT/deps/meshlab-src"
+
+PACKAGES=(
+  build-essential cmake pkg-config ccache
+  qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev libglew-dev
+  libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev
+  libsuitesparse-dev libopenblas0-pthread libgtest-dev
+  meshlab dpkg-dev
+  xvfb xauth xdotool imagemagick python3 python3-matplotlib python3-numpy
+  libcgal-demo
+)
+
+if [ "$(id -u)" -eq 0 ]; then SUDO=(); else SUDO=(sudo); fi
+
+log() { printf '[setup] %s\n' "$*" >&2; }
+
+missing_packages() {
+  local p
+  for p in "${PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}\n' "$p" 2>/dev/null | grep -q "install ok installed" || echo "$p"
+  done
+}
+
+source_is_known() {
+  apt-cache showsrc meshlab 2>/dev/null | grep -q '^Package: meshlab'
+}
+
+deb_src_configured() {
+  grep -rhsqE '^(deb-src[[:space:]]|Types:.*deb-src)' /etc/apt/sources.list /etc/apt/sources.list.d/
+}
+
+# Adds deb-src entries mirroring the machine's own bookworm 'deb' entries, so the
+# source package comes from the same archive the binaries came from.
+add_deb_src() {
+  local out=/etc/apt/sources.list.d/pcskeleton-src.sources
+  local tmp
+  tmp="$(mktemp)"
+  # deb822 files: copy each stanza that serves bookworm 'main', as deb-src.
+  local f
+  for f in /etc/apt/sources.list.d/*.sources; do
+    [ -e "$f" ] || continue
+    [ "$f" = "$out" ] && continue
+    awk 'BEGIN{RS=""; ORS="\n\n"}
+         /Types:[^\n]*deb/ && /Suites:[^\n]*bookworm/ && /Components:[^\n]*main/ {
+           gsub(/Types:[^\n]*/, "Types: deb-src"); print }' "$f" >>"$tmp"
+  done
+  # one-line files
+  for f in /etc/apt/sources.list /etc/apt/sources.list.d/*.list; do
+    [ -e "$f" ] || continue
+    grep -E '^deb[[:space:]].*[[:space:]]bookworm[[:space:]].*main' "$f" \
+      | sed -E 's/^deb([[:space:]])/deb-src\1/' \
+      | awk '{print "Types: deb-src\nURIs: " $2 "\nSuites: " $3 "\nComponents: main\n"}' >>"$tmp" || true
+  done
+  if ! grep -q 'URIs:' "$tmp"; then
+    rm -f "$tmp"
+    log "no Debian bookworm 'deb' entry found in /etc/apt: cannot add a matching deb-src entry"
+    exit 1
+  fi
+  "${SUDO[@]}" install -m 0644 "$tmp" "$out"
+  rm -f "$tmp"
+  log "added $out"
+}
+
+missing="$(missing_packages | tr '\n' ' ')"
+if [ -n "${missing// /}" ]; then
+  log "installing: $missing"
+  "${SUDO[@]}" apt-get update -qq
+  # shellcheck disable=SC2086
+  DEBIAN_FRONTEND=noninteractive "${SUDO[@]}" apt-get install -y -qq --no-install-recommends $missing >/dev/null
+fi
+
+if [ ! -f "$SDK_DIR/src/common/interfaces.h" ]; then
+  if ! source_is_known; then
+    deb_src_configured || add_deb_src
+    "${SUDO[@]}" apt-get update -qq
+  fi
+  version="$(dpkg-query -W -f='${Version}' meshlab)"
+  log "fetching MeshLab's source package (meshlab=$version) for its plugin headers"
+  work="$(mktemp -d "$ROOT/deps.tmp.XXXXXX")"
+  (cd "$work" && apt-get source -qq "meshlab=$version" >/dev/null 2>&1) || {
+    rm -rf "$work"; log "apt-get source meshlab=$version failed"; exit 1; }
+  mkdir -p "$ROOT/deps"
+  rm -rf "$SDK_DIR"
+  mv "$work"/meshlab-*/ "$SDK_DIR"
+  rm -rf "$work"
+fi
+
+log "ready: MeshLab SDK in ${SDK_DIR#"$ROOT"/}, packages installed"

@@ -1,0 +1,43 @@
+// Checks a raw point cloud and puts it in the frame the algorithm works in.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace pcskeleton {
+
+using Point = Eigen::Vector3d;
+using PointList = std::vector<Point>;
+
+// Thrown for input the algorithm cannot work on; what() is a sentence meant for the user.
+class InvalidInput : public std::runtime_error {
+public:
+    explicit InvalidInput(const std::string& message) : std::runtime_error(message) {}
+};
+
+// The cloud as the algorithm sees it: exact duplicates merged, centred on its bounding
+// box and scaled so that the longest side of the box is 1.6 (the frame of the authors'
+// reference code, in which the paper's default weights were tuned). Results are mapped
+// back with toInputFrame(), so every result is independent of the cloud's units.
+struct NormalizedCloud {
+    PointList points;              // unique points, normalised frame
+    std::vector<int> uniqueIndex;  // for each input point, its index in `points`
+    Point center = Point::Zero();
+    double scale = 1.0;            // normalised = (input - center) * scale
+
+    Point toInputFrame(const Point& p) const { return p / scale + center; }
+    Point toNormalizedFrame(const Point& p) const { return (p - center) * scale; }
+    std::size_t inputSize() const { return uniqueIndex.size(); }
+};
+
+constexpr double kNormalizedLongestSide = 1.6;
+
+// Validates and normalises. Throws InvalidInput, naming the problem and what to do,
+// for: no points; NaN or infinite coordinates; fewer than `minimumUniquePoints`
+// distinct points; all points (numerically) on one line.
+NormalizedCloud normalizeCloud(const PointList& input, std::size_t minimumUniquePoints);
+
+}  // namespace pcskeleton
