@@ -4,6 +4,8 @@
 
 #include <vcg/complex/allocate.h>
 
+#include <QFileInfo>
+
 #include <new>
 
 namespace {
@@ -66,7 +68,9 @@ void addContractionParameters(RichParameterList& list) {
     list.addParam(RichFloat("contractionScale", float(d.contractionScale), "Contraction scale s_L",
         "W_L is multiplied by this after every iteration. The paper uses 3; use 2 for shapes with thin parts "
         "between thick ones (paper Fig. 10), at the cost of an extra iteration."));
-    list.addParam(RichFloat("maxContractionWeight", float(d.maxContractionWeight), "Maximum W_L",
+    // An integer on purpose: MeshLab's dialog shows floats with 3 digits, and would read
+    // 2048 back as 2050 on Apply.
+    list.addParam(RichInt("maxContractionWeight", int(d.maxContractionWeight), "Maximum W_L",
         "Upper limit of the contraction weight, for numerical stability."));
     list.addParam(RichFloat("maxAttractionWeight", float(d.maxAttractionWeight), "Maximum W_H",
         "Upper limit of a point's attraction weight (it grows as the point's 1-ring shrinks)."));
@@ -91,7 +95,7 @@ pcskeleton::ContractionParameters readContractionParameters(const RichParameterL
     p.initialContractionWeight = list.getFloat("contractionWeight");
     p.initialAttractionWeight = list.getFloat("attractionWeight");
     p.contractionScale = list.getFloat("contractionScale");
-    p.maxContractionWeight = list.getFloat("maxContractionWeight");
+    p.maxContractionWeight = list.getInt("maxContractionWeight");
     p.maxAttractionWeight = list.getFloat("maxAttractionWeight");
     p.laplacianRowLimit = list.getFloat("laplacianRowLimit");
     p.maxIterations = list.getInt("maxIterations");
@@ -187,6 +191,8 @@ bool FilterPCSkeletonPlugin::contractPointCloud(MeshDocument& md, const RichPara
         qUtf8Printable(source->label()), input.points.size(), contraction.neighbourCount(),
         contraction.initialContractionWeight(), contraction.neighbourhoodSeconds());
 
+    // MeshLab's layer list cuts a label at its first dot: "bunny.ply contracted" shows as "bunny".
+    const QString baseName = QFileInfo(source->label()).completeBaseName();
     const int limit = iterationsToRun > 0 ? std::min(iterationsToRun, settings.maxIterations) : settings.maxIterations;
     int done = 0;
     while (!contraction.finished() && done < limit) {
@@ -197,12 +203,12 @@ bool FilterPCSkeletonPlugin::contractPointCloud(MeshDocument& md, const RichPara
         progress(30 + 70 * done / limit, "Contracting");
         if (keepEveryIteration && !contraction.finished() && done < limit) {
             addPointLayer(md, *source, input, contraction.contractedPoints(),
-                          QString("%1 contracted (iteration %2)").arg(source->label()).arg(r.iteration));
+                          QString("%1 contracted (iteration %2)").arg(baseName).arg(r.iteration));
         }
     }
 
-    const QString label = keepEveryIteration ? QString("%1 contracted (iteration %2)").arg(source->label()).arg(done)
-                                             : QString("%1 contracted").arg(source->label());
+    const QString label = keepEveryIteration ? QString("%1 contracted (iteration %2)").arg(baseName).arg(done)
+                                             : QString("%1 contracted").arg(baseName);
     addPointLayer(md, *source, input, contraction.contractedPoints(), label);
     const QString stop = contraction.finished() ? QString::fromStdString(pcskeleton::describe(contraction.stopReason()))
                                                 : QString("paused after the requested %1 iteration(s)").arg(done);

@@ -1,0 +1,69 @@
+#!/usr/bin/python3
+"""Renders point clouds (ASCII PLY, OFF or XYZ) side by side into a PNG.
+
+usage: render_points.py OUT.png TITLE FILE[:LABEL] [FILE[:LABEL] ...]
+Each file gets its own panel, all seen from the same viewpoint and scale; the first
+file is drawn faintly behind the others so that they can be compared with it.
+"""
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+
+def read_points(path):
+    with open(path, "r", errors="replace") as f:
+        lines = f.read().splitlines()
+    if lines and lines[0].strip() == "ply":
+        count, start = 0, 0
+        for i, line in enumerate(lines):
+            words = line.split()
+            if words[:2] == ["element", "vertex"]:
+                count = int(words[2])
+            if line.strip() == "end_header":
+                start = i + 1
+                break
+        rows = lines[start:start + count]
+    elif lines and lines[0].strip().endswith("OFF"):
+        body = [l for l in lines[1:] if l.strip() and not l.startswith("#")]
+        count = int(body[0].split()[0])
+        rows = body[1:1 + count]
+    else:
+        rows = [l for l in lines if l.strip() and not l.startswith("#")]
+    return np.array([[float(v) for v in r.split()[:3]] for r in rows])
+
+
+def main():
+    out, title, inputs = sys.argv[1], sys.argv[2], sys.argv[3:]
+    clouds = []
+    for item in inputs:
+        path, _, label = item.partition(":")
+        clouds.append((read_points(path), label or path))
+    everything = np.vstack([c for c, _ in clouds])
+    lo, hi = everything.min(axis=0), everything.max(axis=0)
+    centre, half = (lo + hi) / 2, (hi - lo).max() / 2
+    fig = plt.figure(figsize=(5 * len(clouds), 5.4), dpi=110)
+    fig.suptitle(title)
+    for i, (points, label) in enumerate(clouds):
+        ax = fig.add_subplot(1, len(clouds), i + 1, projection="3d")
+        if i == 0:
+            ax.scatter(*points.T, s=1.5, c=points[:, 2], cmap="viridis", depthshade=True)
+        else:
+            reference = clouds[0][0]
+            ax.scatter(*reference.T, s=0.5, c="lightgray", alpha=0.25, depthshade=False)
+            ax.scatter(*points.T, s=2.5, c="crimson", depthshade=False)
+        for axis, c in zip("xyz", centre):
+            getattr(ax, f"set_{axis}lim")(c - half, c + half)
+        ax.set_box_aspect((1, 1, 1))
+        ax.view_init(elev=20, azim=-60)
+        ax.set_axis_off()
+        ax.set_title(f"{label}\n{len(points)} points")
+    fig.tight_layout()
+    fig.savefig(out)
+
+
+if __name__ == "__main__":
+    main()
