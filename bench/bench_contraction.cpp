@@ -1,0 +1,102 @@
+// Benchmark of the contraction (paper steps 1-3): time per stage and peak memory for
+// sampled tori of growing size. Each case runs in a child process so that its peak
+// resident memory is its own.
+//
+// usage: bench_contraction [SIZE ...] [--solver cholmod|eigen|both]
+//        default sizes: 10000 100000 1000000
+#include <pcskeleton/laplacian_contraction.h>
+#include <pcskeleton/sampled_shapes.h>
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+using namespace pcskeleton;
+
+namespace {
+
+struct Row {
+    double neighbourhoods = 0, firstIteration = 0, otherIterations = 0, total = 0;
+    int iterations = 0;
+    double finalRatio = 0;
+};
+
+Row runCase(std::size_t n, LinearSolver solver) {
+    const PointList cloud = shapes::torus(n, 1.0, 0.3, 7);
+    ContractionParameters parameters;
+    parameters.solver = solver;
+    const auto start = std::chrono::steady_clock::now();
+    LaplacianContraction contraction(cloud, parameters);
+    Row row;
+    row.neighbourhoods = contraction.neighbourhoodSeconds();
+    while (!contraction.finished()) {
+        const IterationReport r = contraction.iterate();
+        (r.iteration == 1 ? row.firstIteration : row.otherIterations) += r.seconds;
+        row.finalRatio = r.extentRatio;
+    }
+    const PointList result = contraction.contractedPoints();
+    row.total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    row.iterations = static_cast<int>(contraction.history().size());
+    return row;
+}
+
+const char* name(LinearSolver s) { return s == LinearSolver::Cholmod ? "CHOLMOD" : "Eigen LDLT"; }
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::vector<std::size_t> sizes;
+    std::vector<LinearSolver> solvers = {LinearSolver::Cholmod};
+    for (int a = 1; a < argc; ++a) {
+        if (!std::strcmp(argv[a], "--solver") && a + 1 < argc) {
+            const std::string s = argv[++a];
+            solvers = s == "eigen" ? std::vector<LinearSolver>{LinearSolver::EigenSimplicial}
+                    : s == "both"  ? std::vector<LinearSolver>{LinearSolver::Cholmod, LinearSolver::EigenSimplicial}
+                                   : std::vector<LinearSolver>{LinearSolver::Cholmod};
+        } else {
+            sizes.push_back(std::strtoull(argv[a], nullptr, 10));
+        }
+    }
+    if (sizes.empty()) sizes = {10000, 100000, 1000000};
+
+    std::printf("Laplacian contraction of a sampled torus, %ld cores\n", sysconf(_SC_NPROCESSORS_ONLN));
+    std::printf("%9s  %-10s  %6s  %9s  %9s  %9s  %9s  %9s  %11s\n", "points", "solver", "iters", "1-rings",
+                "iter 1", "iters 2+", "total", "s/Mpoint", "peak RSS");
+    for (std::size_t n : sizes) {
+        for (LinearSolver solver : solvers) {
+            std::fflush(stdout);  // or the child would print the buffered lines again
+            int channel[2];
+            if (pipe(channel) != 0) return 1;
+            const pid_t child = fork();
+            if (child == 0) {
+                close(channel[0]);
+                const Row row = runCase(n, solver);
+                if (write(channel[1], &row, sizeof row) != sizeof row) _exit(1);
+                _exit(0);
+            }
+            close(channel[1]);
+            Row row;
+            const bool ok = read(channel[0], &row, sizeof row) == sizeof row;
+            close(channel[0]);
+            int status = 0;
+            struct rusage usage {};
+            wait4(child, &status, 0, &usage);
+            if (!ok || status != 0) {
+                std::printf("%9zu  %-10s  failed\n", n, name(solver));
+                continue;
+            }
+            std::printf("%9zu  %-10s  %6d  %8.2fs  %8.2fs  %8.2fs  %8.2fs  %9.2f  %8.0f MB\n", n, name(solver),
+                        row.iterations, row.neighbourhoods, row.firstIteration, row.otherIterations, row.total,
+                        row.total / (n / 1e6), usage.ru_maxrss / 1024.0);
+            std::fflush(stdout);
+        }
+    }
+    return 0;
+}
