@@ -14,6 +14,8 @@ if [ -z "${PCSKELETON_IN_XVFB:-}" ]; then
 fi
 
 rm -rf "$WORK"; mkdir -p "$WORK"; cd "$WORK"
+# A fresh MeshLab configuration every time: saved window layouts would move the widgets.
+export XDG_CONFIG_HOME="$WORK/config"
 tar -xzf /usr/share/doc/libcgal-dev/data.tar.gz data/meshes/elephant.off
 INPUT="$WORK/data/meshes/elephant.off"
 step=0

@@ -111,6 +111,27 @@ TEST(Contraction, ResultIsScaleAndTranslationInvariant) {
     }
 }
 
+TEST(Contraction, ASlowStartDoesNotEndTheContraction) {
+    // Dense clouds (or a small W_L0) start slowly: the cotangent Laplacian's coordinates
+    // shrink with the square of the spacing. The run must go on until the rings shrank.
+    const PointList cloud = shapes::cylinder(3000, 0.1, 1.0, true);
+    ContractionParameters p;
+    p.initialContractionWeight = 0.3;
+    const ContractionResult result = LaplacianContraction::run(cloud, p);
+    ASSERT_GE(result.iterations.size(), 3u);
+    EXPECT_GT(result.iterations[1].extentRatio, 1.0 - p.terminationThreshold) << "no slow start happened";
+    EXPECT_EQ(result.stopReason, StopReason::Converged);
+    EXPECT_LT(meanDistanceToAxis(result.contracted, 1.0), 0.1 * meanDistanceToAxis(cloud, 1.0));
+}
+
+TEST(Contraction, DenseCloudsContractLikeSparseOnes) {
+    for (std::size_t n : {3000, 30000}) {
+        const PointList cloud = shapes::cylinder(n, 0.1, 1.0, true);
+        const ContractionResult result = LaplacianContraction::run(cloud);
+        EXPECT_LT(meanDistanceToAxis(result.contracted, 1.0), 0.1 * meanDistanceToAxis(cloud, 1.0)) << n << " points";
+    }
+}
+
 TEST(Contraction, IterationLimitIsHonoured) {
     ContractionParameters p;
     p.maxIterations = 1;

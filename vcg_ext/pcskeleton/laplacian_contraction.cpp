@@ -133,13 +133,17 @@ IterationReport LaplacianContraction::iterate() {
     report.extentRatio = std::accumulate(extents.begin(), extents.end(), 0.0) / initialExtentSum_;
     updateWeights(extents);
 
-    // As in the authors' code, the test compares two solved iterations, so a first step
-    // that barely moves (W_L is still small) does not end the contraction.
-    if (report.iteration > 1 && previousRatio - report.extentRatio < parameters_.terminationThreshold) {
+    // Converged means the rings shrank and then stopped shrinking. Iterations before the
+    // contraction starts do not count: on dense clouds the cotangent Laplacian's coordinates
+    // shrink with the square of the spacing while W_L0 = 1/(5 S0) grows only with its
+    // inverse, so the first iterations can barely move until W_L has grown.
+    const double shrinkage = previousRatio - report.extentRatio;
+    if (contractionStarted_ && shrinkage < parameters_.terminationThreshold) {
         stopReason_ = StopReason::Converged;
     } else if (report.iteration >= parameters_.maxIterations) {
         stopReason_ = StopReason::IterationLimit;
     }
+    contractionStarted_ = contractionStarted_ || shrinkage >= parameters_.terminationThreshold;
     report.seconds = secondsSince(start);
     history_.push_back(report);
     return report;

@@ -5,9 +5,9 @@
 //     [  W_H  ] P'  =  [ W_H P ]
 // i.e. (W_L^2 L^T L + W_H^2) P' = W_H^2 P for x, y and z with one factorisation, then
 // sets W_L <- s_L W_L and W_H,i <- W_H0 S_i^0 / S_i^t, where S_i is the extent of point
-// i's 1-ring. It stops when the total 1-ring extent shrank by less than the threshold
-// (relative to the start) from one iteration to the next, on the iteration limit, or on a
-// numerical failure (the last good positions are kept).
+// i's 1-ring. It stops when, once the contraction has started, the total 1-ring extent
+// shrinks by less than the threshold (relative to the start) in an iteration; on the
+// iteration limit; or on a numerical failure (the last good positions are kept).
 //
 // One-call use:   ContractionResult r = LaplacianContraction::run(points);
 // Step by step:   LaplacianContraction c(points);
@@ -110,6 +110,7 @@ private:
     double neighbourhoodSeconds_ = 0.0;
     std::vector<IterationReport> history_;
     StopReason stopReason_ = StopReason::NotStopped;
+    bool contractionStarted_ = false;  // some iteration shrank the rings by the threshold
 };
 
 }  // namespace pcskeleton
