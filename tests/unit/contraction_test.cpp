@@ -132,6 +132,18 @@ TEST(Contraction, DenseCloudsContractLikeSparseOnes) {
     }
 }
 
+TEST(Contraction, IteratingAfterTheEndChangesNothing) {
+    LaplacianContraction contraction(shapes::torus(2000, 1.0, 0.25));
+    while (!contraction.finished()) contraction.iterate();
+    const StopReason reason = contraction.stopReason();
+    const std::size_t iterations = contraction.history().size();
+    const PointList before = contraction.contractedPoints();
+    contraction.iterate();
+    EXPECT_EQ(contraction.stopReason(), reason);
+    EXPECT_EQ(contraction.history().size(), iterations);
+    EXPECT_EQ(contraction.contractedPoints(), before);
+}
+
 TEST(Contraction, IterationLimitIsHonoured) {
     ContractionParameters p;
     p.maxIterations = 1;

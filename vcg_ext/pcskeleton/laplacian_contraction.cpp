@@ -113,6 +113,7 @@ void LaplacianContraction::updateWeights(const std::vector<double>& extents) {
 }
 
 IterationReport LaplacianContraction::iterate() {
+    if (finished()) return history_.back();
     const auto start = Clock::now();
     IterationReport report;
     report.iteration = static_cast<int>(history_.size()) + 1;
@@ -120,7 +121,7 @@ IterationReport LaplacianContraction::iterate() {
     const double previousRatio = history_.empty() ? 1.0 : history_.back().extentRatio;
 
     PointList next;
-    if (finished() || !solve(contractionWeight_, next)) {
+    if (!solve(contractionWeight_, next)) {
         stopReason_ = StopReason::NumericalFailure;
         report.extentRatio = previousRatio;
         report.seconds = secondsSince(start);

@@ -73,7 +73,7 @@ public:
                                   const ProgressCallback& progress = {});
     ~LaplacianContraction();
 
-    // One contraction iteration. Must not be called once finished().
+    // One contraction iteration; once finished(), changes nothing and returns the last report.
     IterationReport iterate();
     bool finished() const { return stopReason_ != StopReason::NotStopped; }
     StopReason stopReason() const { return stopReason_; }
