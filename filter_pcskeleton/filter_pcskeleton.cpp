@@ -53,6 +53,14 @@ MeshModel* addPointLayer(MeshDocument& md, MeshModel& source, const InputPoints&
     return layer;
 }
 
+// MeshLab's layer list cuts a label at its first dot ("bunny.ply contracted" shows as
+// "bunny"), hence the source's base name. iteration 0: the final layer, unnumbered.
+QString contractedLabel(const MeshModel& source, int iteration) {
+    const QString base = QFileInfo(source.label()).completeBaseName();
+    return iteration > 0 ? QString("%1 contracted (iteration %2)").arg(base).arg(iteration)
+                         : QString("%1 contracted").arg(base);
+}
+
 void addContractionParameters(RichParameterList& list) {
     const pcskeleton::ContractionParameters d;
     list.addParam(RichInt("k", d.neighbourCount, "Neighbours (k)",
@@ -191,8 +199,6 @@ bool FilterPCSkeletonPlugin::contractPointCloud(MeshDocument& md, const RichPara
         qUtf8Printable(source->label()), input.points.size(), contraction.neighbourCount(),
         contraction.initialContractionWeight(), contraction.neighbourhoodSeconds());
 
-    // MeshLab's layer list cuts a label at its first dot: "bunny.ply contracted" shows as "bunny".
-    const QString baseName = QFileInfo(source->label()).completeBaseName();
     const int limit = iterationsToRun > 0 ? std::min(iterationsToRun, settings.maxIterations) : settings.maxIterations;
     int done = 0;
     while (!contraction.finished() && done < limit) {
@@ -203,12 +209,11 @@ bool FilterPCSkeletonPlugin::contractPointCloud(MeshDocument& md, const RichPara
         progress(30 + 70 * done / limit, "Contracting");
         if (keepEveryIteration && !contraction.finished() && done < limit) {
             addPointLayer(md, *source, input, contraction.contractedPoints(),
-                          QString("%1 contracted (iteration %2)").arg(baseName).arg(r.iteration));
+                          contractedLabel(*source, r.iteration));
         }
     }
 
-    const QString label = keepEveryIteration ? QString("%1 contracted (iteration %2)").arg(baseName).arg(done)
-                                             : QString("%1 contracted").arg(baseName);
+    const QString label = contractedLabel(*source, keepEveryIteration ? done : 0);
     addPointLayer(md, *source, input, contraction.contractedPoints(), label);
     const QString stop = contraction.finished() ? QString::fromStdString(pcskeleton::describe(contraction.stopReason()))
                                                 : QString("paused after the requested %1 iteration(s)").arg(done);
