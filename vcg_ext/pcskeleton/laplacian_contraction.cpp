@@ -156,23 +156,29 @@ PointList LaplacianContraction::contractedPoints() const {
     return result;
 }
 
+void LaplacianContraction::iterateToEnd(const ProgressCallback& progress) {
+    while (!finished()) {
+        const IterationReport r = iterate();
+        report(progress, std::min(100, 100 * r.iteration / parameters_.maxIterations), "Contracting");
+    }
+}
+
+ContractionResult LaplacianContraction::result() const {
+    ContractionResult result;
+    result.contracted = contractedPoints();
+    result.iterations = history_;
+    result.stopReason = stopReason_;
+    result.neighbourCount = neighbourCount();
+    result.initialContractionWeight = initialContractionWeight_;
+    result.neighbourhoodSeconds = neighbourhoodSeconds_;
+    return result;
+}
+
 ContractionResult LaplacianContraction::run(const PointList& input, const ContractionParameters& parameters,
                                             const ProgressCallback& progress) {
-    ProgressCallback neighbourhoodProgress;
-    if (progress) neighbourhoodProgress = [&](int percent, const char* what) { progress(percent * 30 / 100, what); };
-    LaplacianContraction contraction(input, parameters, neighbourhoodProgress);
-    while (!contraction.finished()) {
-        const IterationReport r = contraction.iterate();
-        report(progress, 30 + std::min(70, 70 * r.iteration / parameters.maxIterations), "Contracting");
-    }
-    ContractionResult result;
-    result.contracted = contraction.contractedPoints();
-    result.iterations = contraction.history();
-    result.stopReason = contraction.stopReason();
-    result.neighbourCount = contraction.neighbourCount();
-    result.initialContractionWeight = contraction.initialContractionWeight();
-    result.neighbourhoodSeconds = contraction.neighbourhoodSeconds();
-    return result;
+    LaplacianContraction contraction(input, parameters, progressRange(progress, 0, 30));
+    contraction.iterateToEnd(progressRange(progress, 30, 100));
+    return contraction.result();
 }
 
 }  // namespace pcskeleton

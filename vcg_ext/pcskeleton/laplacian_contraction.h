@@ -75,6 +75,8 @@ public:
 
     // One contraction iteration; once finished(), changes nothing and returns the last report.
     IterationReport iterate();
+    // Iterates until finished(); progress 0-100% over the iteration limit.
+    void iterateToEnd(const ProgressCallback& progress = {});
     bool finished() const { return stopReason_ != StopReason::NotStopped; }
     StopReason stopReason() const { return stopReason_; }
 
@@ -89,6 +91,9 @@ public:
     int neighbourCount() const { return rings_.neighbourCount(); }
     double initialContractionWeight() const { return initialContractionWeight_; }
     double neighbourhoodSeconds() const { return neighbourhoodSeconds_; }
+
+    // What the contraction produced so far.
+    ContractionResult result() const;
 
     // Runs to the end. Progress: 0-30% neighbourhoods, then per iteration.
     static ContractionResult run(const PointList& input, const ContractionParameters& parameters = {},

@@ -13,4 +13,10 @@ inline void report(const ProgressCallback& progress, int percent, const char* wh
     if (progress) progress(percent, what);
 }
 
+// A callback for a sub-step that maps its 0..100 onto [from, to] of `progress`.
+inline ProgressCallback progressRange(const ProgressCallback& progress, int from, int to) {
+    if (!progress) return {};
+    return [progress, from, to](int percent, const char* what) { progress(from + (to - from) * percent / 100, what); };
+}
+
 }  // namespace pcskeleton

@@ -1,7 +1,10 @@
 #include "pcskeleton/sampled_shapes.h"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 
 namespace pcskeleton::shapes {
@@ -68,6 +71,57 @@ double distanceToSegment(const Point& p, const Point& a, const Point& b) {
     const Point ab = b - a;
     const double t = std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
     return (p - (a + t * ab)).norm();
+}
+
+double distanceToCurve(const Point& p, const Polyline& curve) {
+    double best = std::numeric_limits<double>::infinity();
+    for (const Segment& s : curve) best = std::min(best, distanceToSegment(p, s.a, s.b));
+    return best;
+}
+
+Polyline circle(const Point& centre, double radius, int sides) {
+    Polyline curve;
+    auto corner = [&](int i) {
+        const double angle = 2 * kPi * i / sides;
+        return Point(centre.x() + radius * std::cos(angle), centre.y() + radius * std::sin(angle), centre.z());
+    };
+    for (int i = 0; i < sides; ++i) curve.push_back({corner(i), corner(i + 1)});
+    return curve;
+}
+
+PointList tube(const Polyline& centreCurve, double radius, std::size_t n, std::uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    // Each capsule's area: side 2 pi r L plus two half spheres.
+    std::vector<double> cumulativeArea;
+    double total = 0.0;
+    for (const Segment& s : centreCurve) {
+        total += 2 * kPi * radius * (s.b - s.a).norm() + 4 * kPi * radius * radius;
+        cumulativeArea.push_back(total);
+    }
+    PointList points;
+    points.reserve(n);
+    while (points.size() < n) {
+        const double pick = unit(rng) * total;
+        const std::size_t k = std::lower_bound(cumulativeArea.begin(), cumulativeArea.end(), pick) - cumulativeArea.begin();
+        const Segment& s = centreCurve[std::min(k, centreCurve.size() - 1)];
+        const Point axis = s.b - s.a;
+        const double length = axis.norm();
+        const Point direction = axis / length;
+        Point p;
+        if (unit(rng) * (length + 2 * radius) < length) {
+            // A unit vector orthogonal to the axis, uniform in angle.
+            Point normal = direction.unitOrthogonal();
+            const double angle = 2 * kPi * unit(rng);
+            normal = std::cos(angle) * normal + std::sin(angle) * direction.cross(normal);
+            p = s.a + unit(rng) * axis + radius * normal;
+        } else {
+            const Point d = uniformOnUnitSphere(rng);
+            p = (d.dot(direction) > 0 ? s.b : s.a) + radius * d;
+        }
+        if (distanceToCurve(p, centreCurve) >= radius * (1 - 1e-9)) points.push_back(p);
+    }
+    return points;
 }
 
 }  // namespace pcskeleton::shapes

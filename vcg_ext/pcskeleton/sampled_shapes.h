@@ -22,4 +22,21 @@ PointList sphere(std::size_t n, double radius, std::uint32_t seed = 1);
 // Distance from p to the segment [a, b].
 double distanceToSegment(const Point& p, const Point& a, const Point& b);
 
+struct Segment {
+    Point a, b;
+};
+using Polyline = std::vector<Segment>;
+
+// The surface of a tube of radius r around any set of segments (the union of capsules):
+// sampled uniformly by area, points inside another segment's capsule dropped. Its curve
+// skeleton is the segments themselves: branches, trees and loops made to order.
+PointList tube(const Polyline& centreCurve, double radius, std::size_t n, std::uint32_t seed = 1);
+
+// A closed regular polygon approximating the circle of radius R around `centre` in the
+// z = centre.z plane.
+Polyline circle(const Point& centre, double radius, int sides = 48);
+
+// Distance from p to the nearest segment.
+double distanceToCurve(const Point& p, const Polyline& curve);
+
 }  // namespace pcskeleton::shapes

@@ -1,0 +1,48 @@
+// The curve skeleton: nodes, bones, per-node radius and the input points each node
+// stands for (the correspondence), plus the topology numbers users check first.
+#pragma once
+
+#include "pcskeleton/point_cloud_input.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace pcskeleton {
+
+using Edge = std::array<int, 2>;  // node indices, smaller first
+
+struct SkeletonGraph {
+    PointList nodes;              // input frame
+    std::vector<Edge> edges;      // sorted, no duplicates, no self-loops
+    std::vector<double> radii;    // per node: mean distance to its corresponding input points
+    std::vector<int> pointNode;   // per input point: the node it belongs to (-1 = none)
+
+    std::size_t nodeCount() const { return nodes.size(); }
+    std::size_t edgeCount() const { return edges.size(); }
+};
+
+struct SkeletonTopology {
+    int nodes = 0, edges = 0;
+    int components = 0;  // connected components
+    int cycles = 0;      // independent cycles (first Betti number): edges - nodes + components
+    int tips = 0;        // nodes of degree 1
+    int junctions = 0;   // nodes of degree 3 or more
+    int isolated = 0;    // nodes of degree 0
+};
+
+SkeletonTopology analyseTopology(std::size_t nodeCount, const std::vector<Edge>& edges);
+inline SkeletonTopology analyseTopology(const SkeletonGraph& graph) {
+    return analyseTopology(graph.nodeCount(), graph.edges);
+}
+
+// "12 nodes, 11 edges, 1 component, 0 cycles, 2 tips, 0 junctions"
+std::string describe(const SkeletonTopology& topology);
+
+// Node degrees, one per node.
+std::vector<int> nodeDegrees(std::size_t nodeCount, const std::vector<Edge>& edges);
+
+// Sorts the edges, orders each edge's ends, drops duplicates and self-loops.
+void normalizeEdges(std::vector<Edge>& edges);
+
+}  // namespace pcskeleton

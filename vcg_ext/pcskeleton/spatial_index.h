@@ -1,0 +1,30 @@
+// Spatial queries on a fixed point list (CGAL's kd-tree), for the steps that need them
+// after the 1-rings: sampling the contracted points, correspondence, tests and tools.
+#pragma once
+
+#include "pcskeleton/point_cloud_input.h"
+
+#include <memory>
+#include <vector>
+
+namespace pcskeleton {
+
+class PointIndex {
+public:
+    // `points` must outlive the index and must not change while it exists.
+    explicit PointIndex(const PointList& points);
+    ~PointIndex();
+    PointIndex(const PointIndex&) = delete;
+    PointIndex& operator=(const PointIndex&) = delete;
+
+    // Replaces `found` with the indices of the points within `radius` of `centre`.
+    void withinRadius(const Point& centre, double radius, std::vector<int>& found) const;
+    // Index of the point nearest to `p` (-1 when the list is empty).
+    int nearest(const Point& p) const;
+
+private:
+    struct Tree;
+    std::unique_ptr<Tree> tree_;
+};
+
+}  // namespace pcskeleton
