@@ -1,7 +1,5 @@
-# MeshLab 2020.09's plugin headers and vcglib come from Debian's source package
-# (scripts/setup.sh unpacks it into deps/meshlab-src); the library is the installed one.
-set(MESHLAB_SOURCE_DIR "${PROJECT_SOURCE_DIR}/deps/meshlab-src" CACHE PATH
-    "MeshLab 2020.09 source tree (from `apt-get source meshlab`)")
+# MeshLab 2020.09's plugin headers come from Debian's source package (MESHLAB_SOURCE_DIR,
+# set in the top-level CMakeLists.txt); the library is the installed one.
 if(NOT EXISTS "${MESHLAB_SOURCE_DIR}/src/common/interfaces.h")
   message(FATAL_ERROR "MeshLab's plugin headers were not found in ${MESHLAB_SOURCE_DIR}.\n"
                       "Run scripts/setup.sh first (it installs the packages and unpacks them).")

@@ -1,12 +1,17 @@
 #include "filter_pcskeleton.h"
 
-#include <pcskeleton/laplacian_contraction.h>
+#include "skeleton_layer.h"
+
+#include <pcskeleton/curve_skeleton.h>
+#include <pcskeleton/skeleton_io.h>
 
 #include <vcg/complex/allocate.h>
 
 #include <QFileInfo>
 
 #include <new>
+
+using namespace pcskeleton::meshlab;
 
 namespace {
 
@@ -15,58 +20,14 @@ const char* const kPaperReference =
     "<b>\"Point Cloud Skeletons via Laplacian-Based Contraction\"</b><br>"
     "Shape Modeling International (SMI) 2010, pages 187-197.";
 
-// Contracted layers remember which input vertex each point came from, for thinning.
-const char* const kInputIndexAttribute = "pcs_input_index";
-
-struct InputPoints {
-    pcskeleton::PointList points;
-    std::vector<CMeshO::VertexPointer> vertices;  // the live vertex of each point
-};
-
-// Every live vertex is a point; faces, if any, are ignored (polygon soups work).
-InputPoints collectPoints(CMeshO& mesh) {
-    InputPoints input;
-    input.points.reserve(mesh.vn);
-    input.vertices.reserve(mesh.vn);
-    for (auto& v : mesh.vert) {
-        if (v.IsD()) continue;
-        input.points.emplace_back(v.P()[0], v.P()[1], v.P()[2]);
-        input.vertices.push_back(&v);
-    }
-    return input;
-}
-
-MeshModel* addPointLayer(MeshDocument& md, MeshModel& source, const InputPoints& input,
-                         const pcskeleton::PointList& positions, const QString& label) {
-    MeshModel* layer = md.addNewMesh("", label, true);
-    CMeshO& out = layer->cm;
-    auto vertex = vcg::tri::Allocator<CMeshO>::AddVertices(out, positions.size());
-    auto inputIndex = vcg::tri::Allocator<CMeshO>::GetPerVertexAttribute<int>(out, kInputIndexAttribute);
-    const bool copyColour = source.hasDataMask(MeshModel::MM_VERTCOLOR);
-    if (copyColour) layer->updateDataMask(MeshModel::MM_VERTCOLOR);
-    for (std::size_t i = 0; i < positions.size(); ++i, ++vertex) {
-        vertex->P() = CMeshO::CoordType(positions[i].x(), positions[i].y(), positions[i].z());
-        if (copyColour) vertex->C() = input.vertices[i]->C();
-        inputIndex[vertex] = static_cast<int>(input.vertices[i] - &source.cm.vert[0]);
-    }
-    layer->UpdateBoxAndNormals();
-    return layer;
-}
-
-// MeshLab's layer list cuts a label at its first dot ("bunny.ply contracted" shows as
-// "bunny"), hence the source's base name. iteration 0: the final layer, unnumbered.
-QString contractedLabel(const MeshModel& source, int iteration) {
-    const QString base = QFileInfo(source.label()).completeBaseName();
-    return iteration > 0 ? QString("%1 contracted (iteration %2)").arg(base).arg(iteration)
-                         : QString("%1 contracted").arg(base);
-}
+const char* const kNeighbourHelp =
+    "Number of nearest neighbours whose tangent-plane Delaunay triangulation gives each point its 1-ring. "
+    "0 = automatic: 1.2% of the points, between 8 and 30 (the paper's rule). Raise it for noisy scans; "
+    "lower it if close-by parts (fingers, claws) get connected.";
 
 void addContractionParameters(RichParameterList& list) {
     const pcskeleton::ContractionParameters d;
-    list.addParam(RichInt("k", d.neighbourCount, "Neighbours (k)",
-        "Number of nearest neighbours whose tangent-plane Delaunay triangulation gives each point its 1-ring. "
-        "0 = automatic: 1.2% of the points, between 8 and 30 (the paper's rule). Raise it for noisy scans; "
-        "lower it if close-by parts (fingers, claws) get connected."));
+    list.addParam(RichInt("k", d.neighbourCount, "Neighbours (k)", kNeighbourHelp));
     list.addParam(RichFloat("contractionWeight", float(d.initialContractionWeight), "Initial contraction weight W_L0",
         "Strength of the Laplacian (shrinking) term in the first iteration, in the normalised frame where the "
         "cloud's longest side is 1.6. 0 = automatic: 1/(5 S0), S0 being the mean 1-ring size. Too high pulls thin "
@@ -90,11 +51,6 @@ void addContractionParameters(RichParameterList& list) {
     list.addParam(RichFloat("terminationThreshold", float(d.terminationThreshold), "Termination threshold",
         "Contraction stops when the total 1-ring size shrank by less than this fraction of its initial value "
         "in the last iteration."));
-    list.addParam(RichInt("iterationsToRun", 0, "Iterations to run",
-        "Run at most this many iterations, to watch the cloud contract step by step "
-        "(0 = until contraction stops)."));
-    list.addParam(RichBool("keepEveryIteration", false, "One layer per iteration",
-        "Add a layer after every iteration instead of only the final one."));
 }
 
 pcskeleton::ContractionParameters readContractionParameters(const RichParameterList& list) {
@@ -111,10 +67,44 @@ pcskeleton::ContractionParameters readContractionParameters(const RichParameterL
     return p;
 }
 
+void addThinningParameters(RichParameterList& list) {
+    const pcskeleton::ThinningParameters d;
+    list.addParam(RichFloat("sampleRadius", float(d.sampleRadius), "Node spacing (fraction of diagonal)",
+        "Radius of the balls that sample the contracted points into skeleton nodes, as a fraction of the "
+        "bounding-box diagonal (the paper's 0.02). Larger: fewer nodes, and parts or holes closer than this "
+        "merge; smaller: more nodes, and noise may survive as short spurs or tiny loops."));
+    list.addParam(RichBool("addSegmentsLayer", true, "Add a layer of points coloured by node",
+        "Adds a copy of the input points, each coloured by the skeleton node it belongs to (the "
+        "correspondence), with the node index in the per-vertex attribute pcs_node. The input layer is "
+        "not changed."));
+}
+
+pcskeleton::ThinningParameters readThinningParameters(const RichParameterList& list) {
+    pcskeleton::ThinningParameters p;
+    p.sampleRadius = list.getFloat("sampleRadius");
+    return p;
+}
+
+pcskeleton::ProgressCallback progressOf(vcg::CallBackPos* cb) {
+    if (!cb) return {};
+    return [cb](int percent, const char* what) { cb(percent, what); };
+}
+
+// The layer the contracted layer came from: the one whose label it extends, else any other.
+MeshModel* likelySourceOf(MeshDocument& md, MeshModel* contracted) {
+    MeshModel* fallback = nullptr;
+    for (MeshModel* m : md.meshList) {
+        if (m == contracted) continue;
+        if (contracted && derivedLabel(*m, "contracted") == contracted->label()) return m;
+        if (!fallback) fallback = m;
+    }
+    return fallback ? fallback : contracted;
+}
+
 }  // namespace
 
 FilterPCSkeletonPlugin::FilterPCSkeletonPlugin() {
-    typeList << FP_CONTRACT_POINT_CLOUD;
+    typeList << FP_CONTRACT_POINT_CLOUD << FP_COMPUTE_SKELETON << FP_SKELETON_FROM_CONTRACTED << FP_EXPORT_SKELETON;
     for (FilterIDType type : typeList) actionList << new QAction(filterName(type), this);
 }
 
@@ -123,6 +113,9 @@ QString FilterPCSkeletonPlugin::pluginName() const { return "FilterPCSkeleton"; 
 QString FilterPCSkeletonPlugin::filterName(FilterIDType filter) const {
     switch (filter) {
         case FP_CONTRACT_POINT_CLOUD: return "Contract Point Cloud (Laplacian)";
+        case FP_COMPUTE_SKELETON: return "Compute Curve Skeleton (Laplacian Contraction)";
+        case FP_SKELETON_FROM_CONTRACTED: return "Skeleton from Contracted Points";
+        case FP_EXPORT_SKELETON: return "Export Skeleton (PLY with edges, OBJ, CG)";
     }
     return {};
 }
@@ -137,6 +130,27 @@ QString FilterPCSkeletonPlugin::filterInfo(FilterIDType filter) const {
                 "layer is not changed. Faces are ignored, so meshes, meshes with boundaries and polygon soups "
                 "work as point clouds. All parameters are relative to the cloud's size: the defaults are the "
                 "paper's.") + kPaperReference;
+        case FP_COMPUTE_SKELETON:
+            return QString(
+                "Computes the curve skeleton of the current layer's points: Laplacian contraction, then "
+                "farthest-point sampling of the contracted points, connection through the points' 1-rings and "
+                "collapse of every triangle (the shape's loops survive), then each node is moved to the centre "
+                "of its input points. Adds a skeleton layer (vertices = nodes, edges = bones, radius in vertex "
+                "quality and in the attribute pcs_radius) and logs its topology: components, cycles, tips, "
+                "junctions. The input layer is not changed. Save the skeleton with Export Skeleton: MeshLab's "
+                "own PLY export drops edges.") + kPaperReference;
+        case FP_SKELETON_FROM_CONTRACTED:
+            return QString(
+                "Thinning alone: turns the current layer, made by Contract Point Cloud (Laplacian), into a "
+                "curve skeleton layer. The source layer gives the original points, from which the 1-rings and "
+                "the node positions and radii are taken. Lets you contract step by step, look, then thin.") +
+                kPaperReference;
+        case FP_EXPORT_SKELETON:
+            return QString(
+                "Writes the current skeleton layer with its edges, which MeshLab's own exporters drop or "
+                "cannot express. The format follows the file extension: .ply (vertices with radius and "
+                "quality, element edge; MeshLab opens it again with its edges), .obj (v and l lines) or .cg "
+                "(the Starlab curve-skeleton format used by skeleton benchmarks; no radius).");
     }
     return {};
 }
@@ -147,19 +161,56 @@ int FilterPCSkeletonPlugin::getPreConditions(QAction*) const { return MeshModel:
 
 int FilterPCSkeletonPlugin::postCondition(QAction*) const { return MeshModel::MM_NONE; }
 
-MeshFilterInterface::FILTER_ARITY FilterPCSkeletonPlugin::filterArity(QAction*) const { return SINGLE_MESH; }
+MeshFilterInterface::FILTER_ARITY FilterPCSkeletonPlugin::filterArity(QAction* action) const {
+    return ID(action) == FP_SKELETON_FROM_CONTRACTED ? FIXED : SINGLE_MESH;
+}
 
-void FilterPCSkeletonPlugin::initParameterSet(QAction* action, MeshModel&, RichParameterList& parameters) {
+void FilterPCSkeletonPlugin::initParameterSet(QAction* action, MeshDocument& md, RichParameterList& parameters) {
     switch (ID(action)) {
-        case FP_CONTRACT_POINT_CLOUD: addContractionParameters(parameters); break;
+        case FP_CONTRACT_POINT_CLOUD:
+            addContractionParameters(parameters);
+            parameters.addParam(RichInt("iterationsToRun", 0, "Iterations to run",
+                "Run at most this many iterations, to watch the cloud contract step by step "
+                "(0 = until contraction stops)."));
+            parameters.addParam(RichBool("keepEveryIteration", false, "One layer per iteration",
+                "Add a layer after every iteration instead of only the final one."));
+            break;
+        case FP_COMPUTE_SKELETON:
+            addContractionParameters(parameters);
+            addThinningParameters(parameters);
+            parameters.addParam(RichBool("addContractedLayer", false, "Add the contracted points layer",
+                "Also adds the contracted points as a layer, e.g. to thin them again later with other settings "
+                "(Skeleton from Contracted Points)."));
+            break;
+        case FP_SKELETON_FROM_CONTRACTED:
+            parameters.addParam(RichMesh("sourceLayer", likelySourceOf(md, md.mm()), &md, "Original points",
+                "The layer that was contracted: its points give the 1-rings, the node positions and the radii."));
+            parameters.addParam(RichInt("k", 0, "Neighbours (k)",
+                QString(kNeighbourHelp) + " Use the value the contraction used."));
+            addThinningParameters(parameters);
+            break;
+        case FP_EXPORT_SKELETON: {
+            const QString base = md.mm() ? md.mm()->label() : QString("skeleton");
+            parameters.addParam(RichSaveFile("fileName", QFileInfo(base).completeBaseName() + ".ply",
+                "Skeleton (*.ply *.obj *.cg)", "File",
+                "Where to write the skeleton; .ply, .obj or .cg. An existing file is replaced."));
+            break;
+        }
     }
 }
 
 bool FilterPCSkeletonPlugin::applyFilter(QAction* action, MeshDocument& md, const RichParameterList& parameters,
                                          vcg::CallBackPos* cb) {
     try {
+        if (md.mm() == nullptr) {
+            errorMessage = "No layer is selected.";
+            return false;
+        }
         switch (ID(action)) {
             case FP_CONTRACT_POINT_CLOUD: return contractPointCloud(md, parameters, cb);
+            case FP_COMPUTE_SKELETON: return computeSkeleton(md, parameters, cb);
+            case FP_SKELETON_FROM_CONTRACTED: return skeletonFromContracted(md, parameters, cb);
+            case FP_EXPORT_SKELETON: return exportSkeleton(md, parameters);
         }
         errorMessage = "Unknown filter.";
     } catch (const pcskeleton::InvalidInput& e) {
@@ -172,14 +223,34 @@ bool FilterPCSkeletonPlugin::applyFilter(QAction* action, MeshDocument& md, cons
     return false;
 }
 
+int FilterPCSkeletonPlugin::contract(pcskeleton::LaplacianContraction& contraction, int limit,
+                                     const std::function<void(int done)>& afterIteration) {
+    int done = 0;
+    while (!contraction.finished() && done < limit) {
+        const pcskeleton::IterationReport r = contraction.iterate();
+        ++done;
+        Log("  iteration %d: mean 1-ring size %.4f of initial, W_L = %.4g, %.2f s", r.iteration, r.extentRatio,
+            r.contractionWeight, r.seconds);
+        afterIteration(done);
+    }
+    if (contraction.stopReason() == pcskeleton::StopReason::NumericalFailure) {
+        Log(GLLogStream::WARNING, "The last iteration failed numerically; the result uses the last good positions.");
+    }
+    return done;
+}
+
+void FilterPCSkeletonPlugin::logContractionStart(const MeshModel& source,
+                                                 const pcskeleton::LaplacianContraction& contraction,
+                                                 std::size_t points) {
+    Log("Contraction of '%s': %zu points, k = %d, W_L0 = %.4g; 1-rings built in %.2f s",
+        qUtf8Printable(source.label()), points, contraction.neighbourCount(), contraction.initialContractionWeight(),
+        contraction.neighbourhoodSeconds());
+}
+
 bool FilterPCSkeletonPlugin::contractPointCloud(MeshDocument& md, const RichParameterList& parameters,
                                                 vcg::CallBackPos* cb) {
-    MeshModel* source = md.mm();
-    if (source == nullptr) {
-        errorMessage = "No layer is selected.";
-        return false;
-    }
-    const InputPoints input = collectPoints(source->cm);
+    MeshModel& source = *md.mm();
+    const LayerPoints input = collectPoints(source.cm);
     const pcskeleton::ContractionParameters settings = readContractionParameters(parameters);
     const int iterationsToRun = parameters.getInt("iterationsToRun");
     const bool keepEveryIteration = parameters.getBool("keepEveryIteration");
@@ -187,40 +258,131 @@ bool FilterPCSkeletonPlugin::contractPointCloud(MeshDocument& md, const RichPara
         errorMessage = "Iterations to run must be 0 (until contraction stops) or positive.";
         return false;
     }
-
-    auto progress = [cb](int percent, const char* what) {
-        if (cb) cb(percent, what);
-    };
-    pcskeleton::ProgressCallback neighbourhoodProgress = [&](int percent, const char* what) {
-        progress(percent * 30 / 100, what);
-    };
-    pcskeleton::LaplacianContraction contraction(input.points, settings, neighbourhoodProgress);
-    Log("Contraction of '%s': %zu points, k = %d, W_L0 = %.4g; 1-rings built in %.2f s",
-        qUtf8Printable(source->label()), input.points.size(), contraction.neighbourCount(),
-        contraction.initialContractionWeight(), contraction.neighbourhoodSeconds());
+    const pcskeleton::ProgressCallback progress = progressOf(cb);
+    pcskeleton::LaplacianContraction contraction(input.points, settings, pcskeleton::progressRange(progress, 0, 30));
+    logContractionStart(source, contraction, input.points.size());
 
     const int limit = iterationsToRun > 0 ? std::min(iterationsToRun, settings.maxIterations) : settings.maxIterations;
-    int done = 0;
-    while (!contraction.finished() && done < limit) {
-        const pcskeleton::IterationReport r = contraction.iterate();
-        ++done;
-        Log("  iteration %d: mean 1-ring size %.4f of initial, W_L = %.4g, %.2f s", r.iteration, r.extentRatio,
-            r.contractionWeight, r.seconds);
-        progress(30 + 70 * done / limit, "Contracting");
-        if (keepEveryIteration && !contraction.finished() && done < limit) {
-            addPointLayer(md, *source, input, contraction.contractedPoints(),
-                          contractedLabel(*source, r.iteration));
+    const int done = contract(contraction, limit, [&](int iteration) {
+        pcskeleton::report(progress, 30 + 70 * iteration / limit, "Contracting");
+        if (keepEveryIteration && !contraction.finished() && iteration < limit) {
+            addPointLayer(md, source, input, contraction.contractedPoints(),
+                          derivedLabel(source, QString("contracted (iteration %1)").arg(iteration)));
         }
-    }
+    });
 
-    const QString label = contractedLabel(*source, keepEveryIteration ? done : 0);
-    addPointLayer(md, *source, input, contraction.contractedPoints(), label);
+    const QString label =
+        derivedLabel(source, keepEveryIteration ? QString("contracted (iteration %1)").arg(done) : "contracted");
+    addPointLayer(md, source, input, contraction.contractedPoints(), label);
     const QString stop = contraction.finished() ? QString::fromStdString(pcskeleton::describe(contraction.stopReason()))
                                                 : QString("paused after the requested %1 iteration(s)").arg(done);
     Log("Contraction: %d iteration(s), %s. New layer '%s'.", done, qUtf8Printable(stop), qUtf8Printable(label));
-    if (contraction.stopReason() == pcskeleton::StopReason::NumericalFailure) {
-        Log(GLLogStream::WARNING, "The last iteration failed numerically; the layer holds the last good positions.");
+    return true;
+}
+
+void FilterPCSkeletonPlugin::addSkeletonLayers(MeshDocument& md, const MeshModel& source, const LayerPoints& input,
+                                               const pcskeleton::SkeletonGraph& skeleton, bool addSegments,
+                                               const pcskeleton::StageSeconds& seconds) {
+    if (addSegments) addSegmentsLayer(md, source, input, skeleton, derivedLabel(source, "segments"));
+    const QString label = derivedLabel(source, "skeleton");
+    addSkeletonLayer(md, source, input, skeleton, label);
+    Log("Skeleton '%s': %s.", qUtf8Printable(label), pcskeleton::describe(pcskeleton::analyseTopology(skeleton)).c_str());
+    Log("Time: 1-rings %.2f s, contraction %.2f s, thinning %.2f s, embedding %.2f s.", seconds.neighbourhoods,
+        seconds.contraction, seconds.thinning, seconds.embedding);
+}
+
+bool FilterPCSkeletonPlugin::computeSkeleton(MeshDocument& md, const RichParameterList& parameters,
+                                             vcg::CallBackPos* cb) {
+    MeshModel& source = *md.mm();
+    const LayerPoints input = collectPoints(source.cm);
+    const pcskeleton::ContractionParameters settings = readContractionParameters(parameters);
+    const pcskeleton::ThinningParameters thinning = readThinningParameters(parameters);
+    const pcskeleton::ProgressCallback progress = progressOf(cb);
+
+    pcskeleton::LaplacianContraction contraction(input.points, settings, pcskeleton::progressRange(progress, 0, 25));
+    logContractionStart(source, contraction, input.points.size());
+    pcskeleton::StageSeconds seconds;
+    seconds.neighbourhoods = contraction.neighbourhoodSeconds();
+    const int done = contract(contraction, settings.maxIterations, [&](int iteration) {
+        pcskeleton::report(progress, 25 + 65 * iteration / settings.maxIterations, "Contracting");
+    });
+    for (const auto& r : contraction.history()) seconds.contraction += r.seconds;
+    Log("Contraction: %d iteration(s), %s.", done, pcskeleton::describe(contraction.stopReason()).c_str());
+
+    const pcskeleton::SkeletonGraph skeleton =
+        pcskeleton::skeletonFromContraction(contraction, thinning, &seconds, pcskeleton::progressRange(progress, 90, 100));
+    if (parameters.getBool("addContractedLayer")) {
+        addPointLayer(md, source, input, contraction.contractedPoints(), derivedLabel(source, "contracted"));
     }
+    addSkeletonLayers(md, source, input, skeleton, parameters.getBool("addSegmentsLayer"), seconds);
+    return true;
+}
+
+bool FilterPCSkeletonPlugin::skeletonFromContracted(MeshDocument& md, const RichParameterList& parameters,
+                                                    vcg::CallBackPos* cb) {
+    MeshModel& contractedLayer = *md.mm();
+    MeshModel* source = parameters.getMesh("sourceLayer");
+    auto inputIndex = vcg::tri::Allocator<CMeshO>::FindPerVertexAttribute<int>(contractedLayer.cm, kInputIndexAttribute);
+    if (!vcg::tri::Allocator<CMeshO>::IsValidHandle(contractedLayer.cm, inputIndex)) {
+        errorMessage = QString("Layer '%1' was not made by Contract Point Cloud (Laplacian): it has no "
+                               "pcs_input_index attribute. Select the contracted layer, or use Compute Curve "
+                               "Skeleton on the original points.").arg(contractedLayer.label());
+        return false;
+    }
+    if (source == nullptr || source == &contractedLayer) {
+        errorMessage = "Choose as original points the layer that was contracted, not the contracted layer itself.";
+        return false;
+    }
+    // Pair every contracted point with its source vertex.
+    const LayerPoints input = collectPoints(source->cm);
+    std::vector<int> pointOfVertex(source->cm.vert.size(), -1);
+    for (std::size_t i = 0; i < input.vertexIndex.size(); ++i) pointOfVertex[input.vertexIndex[i]] = int(i);
+    pcskeleton::PointList contracted(input.points.size());
+    std::vector<bool> seen(input.points.size(), false);
+    for (std::size_t v = 0; v < contractedLayer.cm.vert.size(); ++v) {
+        const CVertexO& vertex = contractedLayer.cm.vert[v];
+        if (vertex.IsD()) continue;
+        const int sourceVertex = inputIndex[v];
+        const int point = sourceVertex >= 0 && sourceVertex < int(pointOfVertex.size()) ? pointOfVertex[sourceVertex] : -1;
+        if (point < 0) {
+            errorMessage = QString("Layer '%1' does not match '%2': contracted point %3 refers to vertex %4, which "
+                                   "'%2' does not have. Choose the layer that was contracted.")
+                               .arg(contractedLayer.label(), source->label()).arg(v).arg(sourceVertex);
+            return false;
+        }
+        contracted[point] = pcskeleton::Point(vertex.cP()[0], vertex.cP()[1], vertex.cP()[2]);
+        seen[point] = true;
+    }
+    const auto missing = std::count(seen.begin(), seen.end(), false);
+    if (missing > 0) {
+        errorMessage = QString("Layer '%1' lacks %2 of the %3 points of '%4': it was made from another layer, or "
+                               "points were deleted since. Contract '%4' again.")
+                           .arg(contractedLayer.label()).arg(missing).arg(input.points.size()).arg(source->label());
+        return false;
+    }
+    pcskeleton::StageSeconds seconds;
+    const pcskeleton::SkeletonGraph skeleton = pcskeleton::skeletonFromContractedPoints(
+        input.points, contracted, parameters.getInt("k"), readThinningParameters(parameters), &seconds, progressOf(cb));
+    addSkeletonLayers(md, *source, input, skeleton, parameters.getBool("addSegmentsLayer"), seconds);
+    return true;
+}
+
+bool FilterPCSkeletonPlugin::exportSkeleton(MeshDocument& md, const RichParameterList& parameters) {
+    const MeshModel& layer = *md.mm();
+    const QString reason = notASkeletonReason(layer);
+    if (!reason.isEmpty()) {
+        errorMessage = reason;
+        return false;
+    }
+    const QString fileName = parameters.getSaveFileName("fileName");
+    if (!pcskeleton::isSkeletonFileName(fileName.toStdString())) {
+        errorMessage = QString("Cannot write '%1': the file name must end in .ply, .obj or .cg.").arg(fileName);
+        return false;
+    }
+    const pcskeleton::SkeletonGraph skeleton = readSkeletonLayer(layer);
+    pcskeleton::writeSkeleton(skeleton, fileName.toStdString());
+    Log("Skeleton '%s' written to '%s': %s.", qUtf8Printable(layer.label()), qUtf8Printable(fileName),
+        pcskeleton::describe(pcskeleton::analyseTopology(skeleton)).c_str());
     return true;
 }
 

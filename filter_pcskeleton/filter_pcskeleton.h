@@ -4,13 +4,21 @@
 
 #include <common/interfaces.h>
 
+#include <pcskeleton/curve_skeleton.h>
+
+#include <functional>
+
+namespace pcskeleton::meshlab {
+struct LayerPoints;
+}
+
 class FilterPCSkeletonPlugin : public QObject, public MeshFilterInterface {
     Q_OBJECT
     MESHLAB_PLUGIN_IID_EXPORTER(MESH_FILTER_INTERFACE_IID)
     Q_INTERFACES(MeshFilterInterface)
 
 public:
-    enum { FP_CONTRACT_POINT_CLOUD };
+    enum { FP_CONTRACT_POINT_CLOUD, FP_COMPUTE_SKELETON, FP_SKELETON_FROM_CONTRACTED, FP_EXPORT_SKELETON };
 
     FilterPCSkeletonPlugin();
 
@@ -21,10 +29,21 @@ public:
     int getPreConditions(QAction* action) const override;
     int postCondition(QAction* action) const override;
     FILTER_ARITY filterArity(QAction* action) const override;
-    void initParameterSet(QAction* action, MeshModel& m, RichParameterList& parameters) override;
+    void initParameterSet(QAction* action, MeshDocument& md, RichParameterList& parameters) override;
     bool applyFilter(QAction* action, MeshDocument& md, const RichParameterList& parameters,
                      vcg::CallBackPos* cb) override;
 
 private:
+    // Iterates until the contraction stops or `limit` iterations, logging each one.
+    int contract(pcskeleton::LaplacianContraction& contraction, int limit,
+                 const std::function<void(int done)>& afterIteration);
+    void logContractionStart(const MeshModel& source, const pcskeleton::LaplacianContraction& contraction,
+                             std::size_t points);
+    void addSkeletonLayers(MeshDocument& md, const MeshModel& source, const pcskeleton::meshlab::LayerPoints& input,
+                           const pcskeleton::SkeletonGraph& skeleton, bool addSegments,
+                           const pcskeleton::StageSeconds& seconds);
     bool contractPointCloud(MeshDocument& md, const RichParameterList& parameters, vcg::CallBackPos* cb);
+    bool computeSkeleton(MeshDocument& md, const RichParameterList& parameters, vcg::CallBackPos* cb);
+    bool skeletonFromContracted(MeshDocument& md, const RichParameterList& parameters, vcg::CallBackPos* cb);
+    bool exportSkeleton(MeshDocument& md, const RichParameterList& parameters);
 };

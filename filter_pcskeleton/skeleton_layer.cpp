@@ -1,0 +1,140 @@
+#include "skeleton_layer.h"
+
+#include <vcg/complex/allocate.h>
+
+#include <QFileInfo>
+
+namespace pcskeleton::meshlab {
+
+const char* const kInputIndexAttribute = "pcs_input_index";
+const char* const kRadiusAttribute = "pcs_radius";
+const char* const kNodeAttribute = "pcs_node";
+const char* const kCorrespondenceAttribute = "pcs_correspondence";
+const char* const kSourceLayerAttribute = "pcs_source_layer";
+
+using Allocator = vcg::tri::Allocator<CMeshO>;
+
+namespace {
+
+CMeshO::CoordType toMeshLab(const Point& p) { return CMeshO::CoordType(p.x(), p.y(), p.z()); }
+
+MeshModel* addPointCopy(MeshDocument& md, const MeshModel& source, const LayerPoints& input,
+                        const PointList& positions, const QString& label) {
+    MeshModel* layer = md.addNewMesh("", label, true);
+    CMeshO& out = layer->cm;
+    auto vertex = Allocator::AddVertices(out, positions.size());
+    auto inputIndex = Allocator::GetPerVertexAttribute<int>(out, kInputIndexAttribute);
+    for (std::size_t i = 0; i < positions.size(); ++i, ++vertex) {
+        vertex->P() = toMeshLab(positions[i]);
+        inputIndex[vertex] = input.vertexIndex[i];
+    }
+    return layer;
+}
+
+}  // namespace
+
+LayerPoints collectPoints(const CMeshO& mesh) {
+    LayerPoints input;
+    input.points.reserve(mesh.vn);
+    input.vertexIndex.reserve(mesh.vn);
+    for (std::size_t i = 0; i < mesh.vert.size(); ++i) {
+        const CVertexO& v = mesh.vert[i];
+        if (v.IsD()) continue;
+        input.points.emplace_back(v.cP()[0], v.cP()[1], v.cP()[2]);
+        input.vertexIndex.push_back(int(i));
+    }
+    return input;
+}
+
+QString derivedLabel(const MeshModel& source, const QString& what) {
+    return QString("%1 %2").arg(QFileInfo(source.label()).completeBaseName(), what);
+}
+
+MeshModel* addPointLayer(MeshDocument& md, const MeshModel& source, const LayerPoints& input,
+                         const PointList& positions, const QString& label) {
+    MeshModel* layer = addPointCopy(md, source, input, positions, label);
+    if (source.hasDataMask(MeshModel::MM_VERTCOLOR)) {
+        layer->updateDataMask(MeshModel::MM_VERTCOLOR);
+        for (std::size_t i = 0; i < input.vertexIndex.size(); ++i) {
+            layer->cm.vert[i].C() = source.cm.vert[input.vertexIndex[i]].cC();
+        }
+    }
+    layer->UpdateBoxAndNormals();
+    return layer;
+}
+
+MeshModel* addSkeletonLayer(MeshDocument& md, const MeshModel& source, const LayerPoints& input,
+                            const SkeletonGraph& skeleton, const QString& label) {
+    MeshModel* layer = md.addNewMesh("", label, true);
+    CMeshO& out = layer->cm;
+    layer->updateDataMask(MeshModel::MM_VERTQUALITY);
+    auto vertex = Allocator::AddVertices(out, skeleton.nodeCount());
+    auto radius = Allocator::GetPerVertexAttribute<float>(out, kRadiusAttribute);
+    for (std::size_t n = 0; n < skeleton.nodeCount(); ++n, ++vertex) {
+        vertex->P() = toMeshLab(skeleton.nodes[n]);
+        vertex->Q() = radius[vertex] = float(skeleton.radii[n]);
+    }
+    for (const Edge& e : skeleton.edges) Allocator::AddEdge(out, e[0], e[1]);
+
+    std::vector<int> correspondence(source.cm.vert.size(), -1);
+    for (std::size_t i = 0; i < input.vertexIndex.size(); ++i) correspondence[input.vertexIndex[i]] = skeleton.pointNode[i];
+    Allocator::GetPerMeshAttribute<std::vector<int>>(out, kCorrespondenceAttribute)() = std::move(correspondence);
+    Allocator::GetPerMeshAttribute<int>(out, kSourceLayerAttribute)() = source.id();
+    layer->UpdateBoxAndNormals();
+    return layer;
+}
+
+MeshModel* addSegmentsLayer(MeshDocument& md, const MeshModel& source, const LayerPoints& input,
+                            const SkeletonGraph& skeleton, const QString& label) {
+    MeshModel* layer = addPointCopy(md, source, input, input.points, label);
+    layer->updateDataMask(MeshModel::MM_VERTCOLOR);
+    auto node = Allocator::GetPerVertexAttribute<int>(layer->cm, kNodeAttribute);
+    const int nodeCount = std::max<int>(1, int(skeleton.nodeCount()));
+    for (std::size_t i = 0; i < input.points.size(); ++i) {
+        CVertexO& v = layer->cm.vert[i];
+        node[v] = skeleton.pointNode[i];
+        v.C() = skeleton.pointNode[i] < 0 ? vcg::Color4b(vcg::Color4b::Gray)
+                                          : vcg::Color4b::Scatter(nodeCount, skeleton.pointNode[i], .6f, .9f);
+    }
+    layer->UpdateBoxAndNormals();
+    return layer;
+}
+
+QString notASkeletonReason(const MeshModel& layer) {
+    CMeshO& m = const_cast<CMeshO&>(layer.cm);  // vcglib's attribute lookup is not const
+    if (m.vn == 0) return QString("Layer '%1' is empty: it is not a skeleton.").arg(layer.label());
+    if (m.fn > 0) {
+        return QString("Layer '%1' has faces: it is a mesh, not a skeleton. Select a skeleton layer (made by "
+                       "Compute Curve Skeleton, or a PLY/OBJ file with edges).").arg(layer.label());
+    }
+    const bool hasRadius = Allocator::IsValidHandle(m, Allocator::FindPerVertexAttribute<float>(m, kRadiusAttribute));
+    if (m.en == 0 && !hasRadius) {
+        return QString("Layer '%1' has no edges: it is a point cloud, not a skeleton. Run Compute Curve "
+                       "Skeleton on it first, or open a skeleton PLY/OBJ file with edges.").arg(layer.label());
+    }
+    return {};
+}
+
+SkeletonGraph readSkeletonLayer(const MeshModel& layer) {
+    CMeshO& m = const_cast<CMeshO&>(layer.cm);  // vcglib's attribute lookup is not const
+    auto radius = Allocator::FindPerVertexAttribute<float>(m, kRadiusAttribute);
+    const bool hasRadius = Allocator::IsValidHandle(m, radius);
+    SkeletonGraph skeleton;
+    std::vector<int> node(m.vert.size(), -1);
+    for (std::size_t i = 0; i < m.vert.size(); ++i) {
+        const CVertexO& v = m.vert[i];
+        if (v.IsD()) continue;
+        node[i] = int(skeleton.nodes.size());
+        skeleton.nodes.emplace_back(v.cP()[0], v.cP()[1], v.cP()[2]);
+        skeleton.radii.push_back(hasRadius ? radius[i] : v.cQ());
+    }
+    for (const CEdgeO& e : m.edge) {
+        if (e.IsD()) continue;
+        const int a = node[vcg::tri::Index(m, e.cV(0))], b = node[vcg::tri::Index(m, e.cV(1))];
+        if (a >= 0 && b >= 0) skeleton.edges.push_back({a, b});
+    }
+    normalizeEdges(skeleton.edges);
+    return skeleton;
+}
+
+}  // namespace pcskeleton::meshlab

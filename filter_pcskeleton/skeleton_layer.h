@@ -1,0 +1,52 @@
+// How pcskeleton's data lives in MeshLab layers: the conversions between CMeshO and the
+// vcg_ext types, shared by the filters (and the skeleton editor).
+//
+// A skeleton layer: vertices = nodes, edges = bones, no faces. The radius is the vertex
+// quality (MeshLab shows, colours and saves it) and the per-vertex attribute pcs_radius.
+// The per-mesh attribute pcs_correspondence holds, for each vertex slot of the source
+// point layer, the node it belongs to (-1: none), and pcs_source_layer that layer's id.
+#pragma once
+
+#include <common/meshmodel.h>
+
+#include <pcskeleton/skeleton_graph.h>
+
+#include <QString>
+
+namespace pcskeleton::meshlab {
+
+extern const char* const kInputIndexAttribute;      // per vertex, int: source vertex of a contracted point
+extern const char* const kRadiusAttribute;          // per vertex, float: node radius
+extern const char* const kNodeAttribute;            // per vertex, int: a point's node (segments layer)
+extern const char* const kCorrespondenceAttribute;  // per mesh, std::vector<int>
+extern const char* const kSourceLayerAttribute;     // per mesh, int: MeshModel id
+
+// The live vertices of a layer as points; faces are ignored (polygon soups work).
+struct LayerPoints {
+    PointList points;
+    std::vector<int> vertexIndex;  // slot in mesh.vert of each point
+};
+LayerPoints collectPoints(const CMeshO& mesh);
+
+// "<source base name> <what>". MeshLab's layer list cuts labels at the first dot, hence
+// the base name ("bunny.ply contracted" would show as "bunny").
+QString derivedLabel(const MeshModel& source, const QString& what);
+
+// A point layer with `positions` (one per point of `input`), each vertex remembering its
+// source vertex in pcs_input_index; vertex colours are copied when the source has them.
+MeshModel* addPointLayer(MeshDocument& md, const MeshModel& source, const LayerPoints& input,
+                         const PointList& positions, const QString& label);
+
+MeshModel* addSkeletonLayer(MeshDocument& md, const MeshModel& source, const LayerPoints& input,
+                            const SkeletonGraph& skeleton, const QString& label);
+
+// A copy of the source points, each coloured by its node and carrying pcs_node.
+MeshModel* addSegmentsLayer(MeshDocument& md, const MeshModel& source, const LayerPoints& input,
+                            const SkeletonGraph& skeleton, const QString& label);
+
+// Empty when `layer` can be read as a skeleton, else the reason, meant for the user.
+QString notASkeletonReason(const MeshModel& layer);
+// The layer's live vertices and edges as a graph (nodes renumbered densely).
+SkeletonGraph readSkeletonLayer(const MeshModel& layer);
+
+}  // namespace pcskeleton::meshlab
