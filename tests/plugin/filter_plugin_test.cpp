@@ -1,83 +1,15 @@
-// The real plugin: loaded from its built .so with QPluginLoader and applied to a
-// MeshDocument, the way MeshLab and meshlabserver use it.
-#include <common/interfaces.h>
-#include <common/meshmodel.h>
+// The contraction filter through the real plugin .so.
+#include "plugin_fixture.h"
 
 #include <pcskeleton/sampled_shapes.h>
 
-#include <vcg/complex/allocate.h>
-
 #include <QCoreApplication>
-#include <QPluginLoader>
-
-#include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 
 namespace {
-
 const char* const kContractFilter = "Contract Point Cloud (Laplacian)";
-
-class FilterPluginTest : public ::testing::Test {
-protected:
-    static void SetUpTestSuite() {
-        loader = new QPluginLoader(PCSKELETON_FILTER_PLUGIN_PATH);
-        plugin = qobject_cast<MeshFilterInterface*>(loader->instance());
-    }
-    static void TearDownTestSuite() {
-        loader->unload();
-        delete loader;
-    }
-
-    void SetUp() override { ASSERT_NE(plugin, nullptr) << loader->errorString().toStdString(); }
-
-    QAction* action(const QString& name) {
-        for (QAction* a : plugin->actions())
-            if (a->text() == name) return a;
-        return nullptr;
-    }
-
-    MeshModel* addPointLayer(const pcskeleton::PointList& points, const QString& label) {
-        MeshModel* m = document.addNewMesh("", label, true);
-        auto v = vcg::tri::Allocator<CMeshO>::AddVertices(m->cm, points.size());
-        for (const auto& p : points) (v++)->P() = CMeshO::CoordType(p.x(), p.y(), p.z());
-        m->UpdateBoxAndNormals();
-        return m;
-    }
-
-    RichParameterList defaults(QAction* a) {
-        RichParameterList parameters;
-        plugin->initParameterSet(a, document, parameters);  // the base's MeshDocument overload
-        return parameters;
-    }
-
-    bool apply(QAction* a, const RichParameterList& parameters) {
-        progressCalls = 0;
-        return plugin->applyFilter(a, document, parameters, &countProgress);
-    }
-
-    static bool countProgress(const int, const char*) {
-        ++progressCalls;
-        return true;
-    }
-
-    static QPluginLoader* loader;
-    static MeshFilterInterface* plugin;
-    static int progressCalls;
-    MeshDocument document;
-};
-
-QPluginLoader* FilterPluginTest::loader = nullptr;
-MeshFilterInterface* FilterPluginTest::plugin = nullptr;
-int FilterPluginTest::progressCalls = 0;
-
-std::vector<vcg::Point3f> positionsOf(const MeshModel& m) {
-    std::vector<vcg::Point3f> positions;
-    for (const auto& v : m.cm.vert) positions.push_back(v.cP());
-    return positions;
-}
-
 }  // namespace
 
 TEST_F(FilterPluginTest, DeclaresAPointSetFilterThatMeshLabAccepts) {

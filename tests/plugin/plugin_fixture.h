@@ -1,0 +1,70 @@
+// The real plugin, loaded from its built .so with QPluginLoader and applied to a
+// MeshDocument the way MeshLab and meshlabserver use it; shared by the plugin test files.
+#pragma once
+
+#include <common/interfaces.h>
+#include <common/meshmodel.h>
+
+#include <pcskeleton/point_cloud_input.h>
+
+#include <vcg/complex/allocate.h>
+
+#include <QPluginLoader>
+
+#include <gtest/gtest.h>
+
+class FilterPluginTest : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        loader = new QPluginLoader(PCSKELETON_FILTER_PLUGIN_PATH);
+        plugin = qobject_cast<MeshFilterInterface*>(loader->instance());
+    }
+    static void TearDownTestSuite() {
+        loader->unload();
+        delete loader;
+    }
+
+    void SetUp() override { ASSERT_NE(plugin, nullptr) << loader->errorString().toStdString(); }
+
+    QAction* action(const QString& name) {
+        for (QAction* a : plugin->actions())
+            if (a->text() == name) return a;
+        return nullptr;
+    }
+
+    MeshModel* addPointLayer(const pcskeleton::PointList& points, const QString& label) {
+        MeshModel* m = document.addNewMesh("", label, true);
+        auto v = vcg::tri::Allocator<CMeshO>::AddVertices(m->cm, points.size());
+        for (const auto& p : points) (v++)->P() = CMeshO::CoordType(p.x(), p.y(), p.z());
+        m->UpdateBoxAndNormals();
+        return m;
+    }
+
+    RichParameterList defaults(QAction* a) {
+        RichParameterList parameters;
+        plugin->initParameterSet(a, document, parameters);  // the base's MeshDocument overload
+        return parameters;
+    }
+
+    bool apply(QAction* a, const RichParameterList& parameters) {
+        progressCalls = 0;
+        return plugin->applyFilter(a, document, parameters, &countProgress);
+    }
+
+    static bool countProgress(const int, const char*) {
+        ++progressCalls;
+        return true;
+    }
+
+    static inline QPluginLoader* loader = nullptr;
+    static inline MeshFilterInterface* plugin = nullptr;
+    static inline int progressCalls = 0;
+    MeshDocument document;
+};
+
+inline std::vector<vcg::Point3f> positionsOf(const MeshModel& m) {
+    std::vector<vcg::Point3f> positions;
+    for (const auto& v : m.cm.vert) positions.push_back(v.cP());
+    return positions;
+}
+

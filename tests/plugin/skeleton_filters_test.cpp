@@ -1,0 +1,187 @@
+// The skeleton filters through the real plugin .so: full pipeline, thinning of a
+// contracted layer, export and re-import, and the errors users see.
+#include "plugin_fixture.h"
+
+#include <pcskeleton/sampled_shapes.h>
+#include <pcskeleton/skeleton_io.h>
+
+#include <cstdlib>
+#include <unistd.h>
+
+namespace {
+
+const char* const kContractFilter = "Contract Point Cloud (Laplacian)";
+const char* const kSkeletonFilter = "Compute Curve Skeleton (Laplacian Contraction)";
+const char* const kThinningFilter = "Skeleton from Contracted Points";
+const char* const kExportFilter = "Export Skeleton (PLY with edges, OBJ, CG)";
+
+using SkeletonFilterTest = FilterPluginTest;
+
+pcskeleton::SkeletonTopology topologyOfLayer(const MeshModel& m) {
+    std::vector<pcskeleton::Edge> edges;
+    for (const auto& e : m.cm.edge) {
+        edges.push_back({int(vcg::tri::Index(m.cm, e.cV(0))), int(vcg::tri::Index(m.cm, e.cV(1)))});
+    }
+    return pcskeleton::analyseTopology(m.cm.vert.size(), edges);
+}
+
+std::string temporaryDirectory() {
+    char pattern[] = "/tmp/pcskeleton_plugin_XXXXXX";
+    return mkdtemp(pattern);
+}
+
+}  // namespace
+
+TEST_F(SkeletonFilterTest, DeclaresEveryFilterWithHelpText) {
+    addPointLayer(pcskeleton::shapes::sphere(100, 1.0), "sphere");
+    for (const char* name : {kSkeletonFilter, kThinningFilter, kExportFilter}) {
+        QAction* a = action(name);
+        ASSERT_NE(a, nullptr) << name;
+        EXPECT_EQ(plugin->getClass(a), MeshFilterInterface::PointSet) << name;
+        EXPECT_FALSE(plugin->filterInfo(a).isEmpty()) << name;
+        const RichParameterList parameters = defaults(a);
+        for (const RichParameter& p : parameters) {
+            EXPECT_FALSE(p.toolTip().isEmpty()) << name << ": " << p.name().toStdString() << " has no help text";
+        }
+    }
+    EXPECT_EQ(plugin->filterArity(action(kThinningFilter)), MeshFilterInterface::FIXED);
+    EXPECT_FLOAT_EQ(defaults(action(kSkeletonFilter)).getFloat("sampleRadius"), 0.02f);
+}
+
+TEST_F(SkeletonFilterTest, TorusGivesAOneCycleSkeletonLayerAndLeavesTheInputAlone) {
+    MeshModel* input = addPointLayer(pcskeleton::shapes::torus(4000, 1.0, 0.25), "torus");
+    const auto before = positionsOf(*input);
+    QAction* a = action(kSkeletonFilter);
+    RichParameterList parameters = defaults(a);
+    parameters.setValue("addContractedLayer", BoolValue(true));
+    ASSERT_TRUE(apply(a, parameters)) << plugin->errorMsg().toStdString();
+    EXPECT_EQ(positionsOf(*input), before);
+    EXPECT_GT(progressCalls, 3);
+
+    ASSERT_EQ(document.meshList.size(), 4);
+    EXPECT_EQ(document.meshList[1]->label(), "torus contracted");
+    MeshModel* segments = document.meshList[2];
+    MeshModel* skeleton = document.mm();
+    EXPECT_EQ(segments->label(), "torus segments");
+    EXPECT_EQ(skeleton->label(), "torus skeleton");
+
+    const pcskeleton::SkeletonTopology t = topologyOfLayer(*skeleton);
+    EXPECT_EQ(t.cycles, 1) << pcskeleton::describe(t);
+    EXPECT_EQ(t.components, 1) << pcskeleton::describe(t);
+    EXPECT_EQ(skeleton->cm.fn, 0);
+    EXPECT_TRUE(skeleton->hasDataMask(MeshModel::MM_VERTQUALITY));
+    for (const auto& v : skeleton->cm.vert) EXPECT_NEAR(v.cQ(), 0.25, 0.05) << "radius of a node";
+
+    // Correspondence: per input vertex in the skeleton layer, per point in the segments layer.
+    auto correspondence =
+        vcg::tri::Allocator<CMeshO>::FindPerMeshAttribute<std::vector<int>>(skeleton->cm, "pcs_correspondence");
+    ASSERT_TRUE(vcg::tri::Allocator<CMeshO>::IsValidHandle(skeleton->cm, correspondence));
+    ASSERT_EQ(correspondence().size(), input->cm.vert.size());
+    auto node = vcg::tri::Allocator<CMeshO>::FindPerVertexAttribute<int>(segments->cm, "pcs_node");
+    ASSERT_TRUE(vcg::tri::Allocator<CMeshO>::IsValidHandle(segments->cm, node));
+    ASSERT_EQ(segments->cm.vn, input->cm.vn);
+    for (int i = 0; i < input->cm.vn; i += 97) {
+        const int n = correspondence()[i];
+        ASSERT_GE(n, 0);
+        ASSERT_LT(n, skeleton->cm.vn);
+        EXPECT_EQ(node[i], n);
+        EXPECT_LT(vcg::Distance(input->cm.vert[i].cP(), skeleton->cm.vert[n].cP()), 0.5f) << "point " << i;
+    }
+    EXPECT_TRUE(segments->hasDataMask(MeshModel::MM_VERTCOLOR));
+}
+
+TEST_F(SkeletonFilterTest, ThinningAContractedLayerEqualsTheWholePipeline) {
+    addPointLayer(pcskeleton::shapes::torus(3000, 1.0, 0.3), "torus");
+    QAction* contract = action(kContractFilter);
+    ASSERT_TRUE(apply(contract, defaults(contract))) << plugin->errorMsg().toStdString();
+    QAction* thin = action(kThinningFilter);
+    const RichParameterList parameters = defaults(thin);
+    EXPECT_EQ(parameters.getMesh("sourceLayer"), document.meshList[0]) << "the contracted layer's source is proposed";
+    ASSERT_TRUE(apply(thin, parameters)) << plugin->errorMsg().toStdString();
+    const pcskeleton::SkeletonTopology stepwise = topologyOfLayer(*document.mm());
+
+    MeshDocument oneCall;
+    std::swap(document.meshList, oneCall.meshList);  // start again from the torus alone
+    document.meshList.clear();
+    addPointLayer(pcskeleton::shapes::torus(3000, 1.0, 0.3), "torus");
+    QAction* whole = action(kSkeletonFilter);
+    ASSERT_TRUE(apply(whole, defaults(whole))) << plugin->errorMsg().toStdString();
+    const pcskeleton::SkeletonTopology direct = topologyOfLayer(*document.mm());
+    std::swap(document.meshList, oneCall.meshList);
+
+    EXPECT_EQ(stepwise.nodes, direct.nodes);
+    EXPECT_EQ(stepwise.edges, direct.edges);
+    EXPECT_EQ(stepwise.cycles, 1);
+}
+
+TEST_F(SkeletonFilterTest, ExportWritesEdgesAndRadiiThatReadBackAsTheSameGraph) {
+    addPointLayer(pcskeleton::shapes::tube({{pcskeleton::Point(0, 0, 0), pcskeleton::Point(1, 0, 0)},
+                                            {pcskeleton::Point(0, 0, 0), pcskeleton::Point(0, 1, 0)},
+                                            {pcskeleton::Point(0, 0, 0), pcskeleton::Point(-1, -1, 0)}},
+                                           0.1, 5000),
+                  "tripod");
+    QAction* compute = action(kSkeletonFilter);
+    ASSERT_TRUE(apply(compute, defaults(compute))) << plugin->errorMsg().toStdString();
+    const MeshModel& layer = *document.mm();
+    const pcskeleton::SkeletonTopology t = topologyOfLayer(layer);
+    EXPECT_EQ(t.tips, 3) << pcskeleton::describe(t);
+    EXPECT_EQ(t.junctions, 1) << pcskeleton::describe(t);
+
+    const std::string dir = temporaryDirectory();
+    QAction* exporter = action(kExportFilter);
+    for (const char* name : {"s.ply", "s.obj", "s.cg"}) {
+        RichParameterList parameters = defaults(exporter);
+        const std::string path = dir + "/" + name;
+        parameters.setValue("fileName", FileValue(QString::fromStdString(path)));
+        ASSERT_TRUE(apply(exporter, parameters)) << plugin->errorMsg().toStdString();
+        const pcskeleton::SkeletonGraph back = pcskeleton::readSkeleton(path);
+        const pcskeleton::SkeletonTopology r = pcskeleton::analyseTopology(back);
+        EXPECT_EQ(r.nodes, t.nodes) << name;
+        EXPECT_EQ(r.edges, t.edges) << name;
+        EXPECT_EQ(r.tips, 3) << name;
+        ASSERT_EQ(int(back.nodes.size()), layer.cm.vn) << name;
+        for (int n = 0; n < layer.cm.vn; ++n) {
+            EXPECT_NEAR(back.nodes[n].x(), layer.cm.vert[n].cP()[0], 1e-6) << name;
+            if (std::string(name) == "s.ply") EXPECT_NEAR(back.radii[n], layer.cm.vert[n].cQ(), 1e-6);
+        }
+    }
+    std::system(("rm -rf '" + dir + "'").c_str());
+}
+
+TEST_F(SkeletonFilterTest, LayersThatAreNotWhatAFilterNeedsGiveClearErrors) {
+    MeshModel* cloud = addPointLayer(pcskeleton::shapes::torus(2000, 1.0, 0.3), "torus");
+
+    QAction* thin = action(kThinningFilter);
+    RichParameterList parameters = defaults(thin);
+    EXPECT_FALSE(apply(thin, parameters));
+    EXPECT_TRUE(plugin->errorMsg().contains("not made by Contract Point Cloud")) << plugin->errorMsg().toStdString();
+
+    QAction* exporter = action(kExportFilter);
+    parameters = defaults(exporter);
+    parameters.setValue("fileName", FileValue("/tmp/pcskeleton_never_written.ply"));
+    EXPECT_FALSE(apply(exporter, parameters));
+    EXPECT_TRUE(plugin->errorMsg().contains("not a skeleton")) << plugin->errorMsg().toStdString();
+    EXPECT_NE(access("/tmp/pcskeleton_never_written.ply", F_OK), 0);
+
+    // A contracted layer checked against the wrong source.
+    QAction* contract = action(kContractFilter);
+    ASSERT_TRUE(apply(contract, defaults(contract)));
+    MeshModel* other = addPointLayer(pcskeleton::shapes::sphere(300, 1.0), "sphere");
+    document.setCurrentMesh(document.meshList[1]->id());
+    parameters = defaults(thin);
+    parameters.setValue("sourceLayer", MeshValue(other));
+    EXPECT_FALSE(apply(thin, parameters));
+    EXPECT_TRUE(plugin->errorMsg().contains("does not match") || plugin->errorMsg().contains("lacks"))
+        << plugin->errorMsg().toStdString();
+
+    // Export to a file name without a skeleton extension.
+    QAction* compute = action(kSkeletonFilter);
+    document.setCurrentMesh(cloud->id());
+    ASSERT_TRUE(apply(compute, defaults(compute)));
+    parameters = defaults(exporter);
+    parameters.setValue("fileName", FileValue("/tmp/skeleton.txt"));
+    EXPECT_FALSE(apply(exporter, parameters));
+    EXPECT_TRUE(plugin->errorMsg().contains(".ply, .obj or .cg")) << plugin->errorMsg().toStdString();
+    // torus, contracted, sphere, and the skeleton run's segments and skeleton.
+    EXPECT_EQ(document.meshList.size(), 5) << "failed filters add no layer";
+}
