@@ -7,6 +7,7 @@
 
 #include <vcg/complex/allocate.h>
 
+#include <QDir>
 #include <QFileInfo>
 
 #include <new>
@@ -101,6 +102,27 @@ MeshModel* likelySourceOf(MeshDocument& md, MeshModel* contracted) {
     return fallback ? fallback : contracted;
 }
 
+// "<folder of the points' file>/<layer label>.ply": next to the data rather than in
+// whatever directory MeshLab was started from.
+QString defaultSkeletonFileName(MeshDocument& md) {
+    MeshModel* layer = md.mm();
+    QString name = layer ? QFileInfo(layer->label()).completeBaseName() : QString("skeleton");
+    name.replace(' ', '_');
+    QString folder;
+    if (layer) {
+        auto source = vcg::tri::Allocator<CMeshO>::FindPerMeshAttribute<int>(layer->cm, kSourceLayerAttribute);
+        MeshModel* sourceLayer =
+            vcg::tri::Allocator<CMeshO>::IsValidHandle(layer->cm, source) ? md.getMesh(source()) : nullptr;
+        for (MeshModel* m : {layer, sourceLayer}) {
+            if (folder.isEmpty() && m && !m->fullName().isEmpty()) folder = QFileInfo(m->fullName()).absolutePath();
+        }
+    }
+    for (const MeshModel* m : md.meshList) {
+        if (folder.isEmpty() && !m->fullName().isEmpty()) folder = QFileInfo(m->fullName()).absolutePath();
+    }
+    return QDir(folder.isEmpty() ? QDir::homePath() : folder).filePath(name + ".ply");
+}
+
 }  // namespace
 
 FilterPCSkeletonPlugin::FilterPCSkeletonPlugin() {
@@ -190,8 +212,7 @@ void FilterPCSkeletonPlugin::initParameterSet(QAction* action, MeshDocument& md,
             addThinningParameters(parameters);
             break;
         case FP_EXPORT_SKELETON: {
-            const QString base = md.mm() ? md.mm()->label() : QString("skeleton");
-            parameters.addParam(RichSaveFile("fileName", QFileInfo(base).completeBaseName() + ".ply",
+            parameters.addParam(RichSaveFile("fileName", defaultSkeletonFileName(md),
                 "Skeleton (*.ply *.obj *.cg)", "File",
                 "Where to write the skeleton; .ply, .obj or .cg. An existing file is replaced."));
             break;
@@ -381,7 +402,8 @@ bool FilterPCSkeletonPlugin::exportSkeleton(MeshDocument& md, const RichParamete
     }
     const pcskeleton::SkeletonGraph skeleton = readSkeletonLayer(layer);
     pcskeleton::writeSkeleton(skeleton, fileName.toStdString());
-    Log("Skeleton '%s' written to '%s': %s.", qUtf8Printable(layer.label()), qUtf8Printable(fileName),
+    Log("Skeleton '%s' written to '%s': %s.", qUtf8Printable(layer.label()),
+        qUtf8Printable(QFileInfo(fileName).absoluteFilePath()),
         pcskeleton::describe(pcskeleton::analyseTopology(skeleton)).c_str());
     return true;
 }

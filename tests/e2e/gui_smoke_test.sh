@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # GUI smoke test: the build tree's MeshLab, under Xvfb, driven by real mouse and keyboard
-# events (xdotool). It opens a model, finds our filter in Filters > Point Set, applies it
-# from its dialog, exports the new layer and checks it against meshlabserver's result.
+# events (xdotool). It opens a model, finds our filters in Filters > Point Set, applies
+# them from their dialogs (contraction; the whole skeleton pipeline; the skeleton export),
+# exports the new layers and checks them against meshlabserver's results.
 # Screenshots of every step are kept in WORKDIR as artifacts.
 # usage: gui_smoke_test.sh PREFIX MLX WORKDIR
 set -euo pipefail
@@ -41,7 +42,7 @@ shot opened
 click 120 10          # Filters
 click 160 386         # Point Set
 shot point-set-menu
-click 640 461 1.5     # Contract Point Cloud (Laplacian)
+click 640 486 1.5     # Contract Point Cloud (Laplacian)
 wait_window "Contract Point Cloud \(Laplacian\)" 10
 shot filter-dialog
 click 293 641 4       # Apply
@@ -75,4 +76,33 @@ difference = np.abs(gui - script).max() if gui.shape == script.shape else float(
 print(f'GUI vs meshlabserver: largest coordinate difference {difference:.3g}')
 sys.exit(0 if difference < 1e-5 else 1)
 " || fail "the GUI's layer differs from meshlabserver's"
+
+# The whole pipeline from the menu, then the skeleton exported with its edges.
+click 540 114         # make the input layer current
+click 120 10          # Filters
+click 160 386         # Point Set
+click 640 436 1.5     # Compute Curve Skeleton (Laplacian Contraction)
+wait_window "Compute Curve Skeleton" 10
+shot skeleton-dialog
+click 324 670 5       # Apply
+click 112 670         # Close
+shot skeleton-layer
+click 120 10          # Filters
+click 160 386         # Point Set
+click 640 536 1.5     # Export Skeleton (PLY with edges, OBJ, CG)
+wait_window "Export Skeleton" 10
+shot export-dialog
+click 216 264 2       # Apply: the default file is next to the input, named after the layer
+click 76 264          # Close
+GUI_SKELETON="$WORK/data/meshes/elephant_skeleton.ply"
+[ -s "$GUI_SKELETON" ] || fail "Export Skeleton did not write $GUI_SKELETON"
+shot skeleton-exported
+
+# meshlabserver's run of the shipped pipeline script gives the same graph.
+mkdir -p "$WORK/server" && (cd "$WORK/server" && xvfb-run -a "$PREFIX/bin/meshlabserver" -i "$INPUT" \
+  -s "$(dirname "$MLX")/compute_curve_skeleton.mlx" >meshlabserver.log 2>&1) || fail "meshlabserver failed"
+/usr/bin/python3 "$HERE/skeleton_graph.py" check "$GUI_SKELETON" --cycles 0 --components 1 --min-tips 6 \
+  || fail "the GUI's skeleton has the wrong topology"
+/usr/bin/python3 "$HERE/skeleton_graph.py" same "$GUI_SKELETON" "$WORK/server/skeleton.ply" \
+  || fail "the GUI's skeleton differs from meshlabserver's"
 echo "GUI smoke test: OK (screenshots in $WORK)"

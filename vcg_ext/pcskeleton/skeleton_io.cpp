@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -84,10 +85,14 @@ PointList readXyz(const std::string& path) {
         const auto first = line.find_first_not_of(" \t\r");
         if (first == std::string::npos || line[first] == '#') continue;
         std::replace(line.begin(), line.end(), ',', ' ');
-        std::istringstream fields(line);
+        // strtod, unlike istream, reads "nan" and "inf": the cloud check then names them.
         Point p;
-        if (!(fields >> p.x() >> p.y() >> p.z())) {
-            fail(path, "line " + std::to_string(lineNumber) + " does not start with three numbers.");
+        const char* cursor = line.c_str();
+        for (int axis = 0; axis < 3; ++axis) {
+            char* end = nullptr;
+            p[axis] = std::strtod(cursor, &end);
+            if (end == cursor) fail(path, "line " + std::to_string(lineNumber) + " does not start with three numbers.");
+            cursor = end;
         }
         points.push_back(p);
     }

@@ -1,0 +1,80 @@
+#!/usr/bin/env bash
+# The pcskeleton command-line tool: real models from Debian's libcgal-demo with known
+# topology, every output format re-read, binary PLY input, --help, and bad input.
+# usage: cli_test.sh PCSKELETON WORKDIR
+set -euo pipefail
+PCSKELETON="$1"; WORK="$2"
+HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+GRAPH="/usr/bin/python3 $HERE/skeleton_graph.py"
+rm -rf "$WORK"; mkdir -p "$WORK"; cd "$WORK"
+fail() { echo "FAIL: $*"; exit 1; }
+
+tar -xzf /usr/share/doc/libcgal-dev/data.tar.gz data/meshes/elephant.off data/meshes/knot.off \
+  data/meshes/double-torus-example.off data/meshes/eight.off
+M=data/meshes
+
+# Known answers on real meshes (their faces are ignored).
+"$PCSKELETON" $M/knot.off -o knot.ply 2>knot.log
+$GRAPH check knot.ply --cycles 1 --tips 0 --components 1
+"$PCSKELETON" $M/double-torus-example.off -o double.ply 2>/dev/null
+$GRAPH check double.ply --cycles 2 --components 1
+"$PCSKELETON" $M/eight.off -o eight.ply 2>/dev/null
+$GRAPH check eight.ply --cycles 2 --components 1
+# An elephant: a tree with at least four legs, a trunk and a tail.
+"$PCSKELETON" $M/elephant.off -o elephant.ply --contracted elephant_contracted.ply \
+  --correspondence elephant.nodes 2>elephant.log
+$GRAPH check elephant.ply --cycles 0 --components 1 --min-tips 6
+
+# The summary line on stderr.
+grep -q "^pcskeleton: .*knot.off: 2080 points -> .* 1 cycle, 0 tips" knot.log || { cat knot.log; fail "no summary line"; }
+
+# One node index per input point; the contracted points (binary PLY) read back as input.
+[ "$(wc -l <elephant.nodes)" = 2775 ] || fail "correspondence has $(wc -l <elephant.nodes) lines, expected 2775"
+head -c 200 elephant_contracted.ply | grep -q "format binary_little_endian" || fail "contracted PLY is not binary"
+"$PCSKELETON" elephant_contracted.ply -o contracted_again.obj --quiet 2>quiet.log
+[ ! -s quiet.log ] || fail "--quiet still printed: $(cat quiet.log)"
+$GRAPH check contracted_again.obj --min-nodes 2
+
+# The three output formats hold the same graph.
+"$PCSKELETON" $M/knot.off -o knot.obj --quiet
+"$PCSKELETON" $M/knot.off -o knot.cg --quiet
+$GRAPH same knot.ply knot.obj
+$GRAPH same knot.ply knot.cg
+
+# Options change what they say they change.
+"$PCSKELETON" $M/knot.off -o knot_coarse.ply --radius 0.05 --quiet
+coarse=$($GRAPH show knot_coarse.ply | sed 's/.*nodes.: \([0-9]*\).*/\1/')
+fine=$($GRAPH show knot.ply | sed 's/.*nodes.: \([0-9]*\).*/\1/')
+[ "$coarse" -lt "$fine" ] || fail "--radius 0.05 gave $coarse nodes, not fewer than the default's $fine"
+
+# --help documents every option with its default.
+"$PCSKELETON" --help >help.txt
+for option in --contracted --correspondence --k --wl --wh --sl --max-wl --max-wh --row-limit --iterations \
+              --threshold --radius --quiet; do
+  grep -q -- "$option" help.txt || fail "--help does not document $option"
+done
+grep -q "\[0.02\]" help.txt || fail "--help does not give the radius default"
+
+# Bad input: non-zero exit and a one-line reason; nothing written.
+expect_error() {  # exit code, text in the message, arguments...
+  local code="$1" text="$2"; shift 2
+  set +e; "$PCSKELETON" "$@" >out.txt 2>err.txt; local got=$?; set -e
+  [ "$got" = "$code" ] || fail "pcskeleton $* exited $got, expected $code ($(cat err.txt))"
+  [ "$(wc -l <err.txt)" = 1 ] || fail "pcskeleton $* printed $(wc -l <err.txt) lines on stderr"
+  grep -q "$text" err.txt || fail "pcskeleton $*: '$(cat err.txt)' does not mention '$text'"
+}
+printf '' >empty.xyz
+printf '0 0 0\n1 0 0\nnan 1 1\n' >nan.xyz
+for i in $(seq 0 40); do echo "$i 0 0"; done >line.xyz
+expect_error 1 "empty" empty.xyz -o out.ply
+expect_error 1 "NaN" nan.xyz -o out.ply
+expect_error 1 "line" line.xyz -o out.ply
+expect_error 1 "cannot be opened" missing.xyz -o out.ply
+expect_error 1 "unknown extension" $M/knot.off.gz -o out.ply
+expect_error 2 "no output" $M/knot.off
+expect_error 2 "must end in .ply, .obj or .cg" $M/knot.off -o out.swc
+expect_error 2 "expects a number" $M/knot.off -o out.ply --radius big
+expect_error 2 "unknown option" $M/knot.off -o out.ply --fast
+expect_error 1 "fraction" $M/knot.off -o out.ply --radius 2
+[ ! -e out.ply ] || fail "a failed run wrote out.ply"
+echo "pcskeleton command line: OK"
