@@ -4,12 +4,10 @@
 //
 // usage: bench_contraction [SIZE ...] [--solver cholmod|eigen|both]
 //        default sizes: 10000 100000 1000000
+#include "run_in_child.h"
+
 #include <pcskeleton/laplacian_contraction.h>
 #include <pcskeleton/sampled_shapes.h>
-
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <chrono>
 #include <cstdio>
@@ -69,30 +67,16 @@ int main(int argc, char** argv) {
                 "iter 1", "iters 2+", "total", "s/Mpoint", "peak RSS");
     for (std::size_t n : sizes) {
         for (LinearSolver solver : solvers) {
-            std::fflush(stdout);  // or the child would print the buffered lines again
-            int channel[2];
-            if (pipe(channel) != 0) return 1;
-            const pid_t child = fork();
-            if (child == 0) {
-                close(channel[0]);
-                const Row row = runCase(n, solver);
-                if (write(channel[1], &row, sizeof row) != sizeof row) _exit(1);
-                _exit(0);
-            }
-            close(channel[1]);
             Row row;
-            const bool ok = read(channel[0], &row, sizeof row) == sizeof row;
-            close(channel[0]);
-            int status = 0;
-            struct rusage usage {};
-            wait4(child, &status, 0, &usage);
-            if (!ok || status != 0) {
+            double peakMegabytes = 0;
+            const bool ok = runInChild([&] { return runCase(n, solver); }, row, peakMegabytes);
+            if (!ok) {
                 std::printf("%9zu  %-10s  failed\n", n, name(solver));
                 continue;
             }
             std::printf("%9zu  %-10s  %6d  %8.2fs  %8.2fs  %8.2fs  %8.2fs  %9.2f  %8.0f MB\n", n, name(solver),
                         row.iterations, row.neighbourhoods, row.firstIteration, row.otherIterations, row.total,
-                        row.total / (n / 1e6), usage.ru_maxrss / 1024.0);
+                        row.total / (n / 1e6), peakMegabytes);
             std::fflush(stdout);
         }
     }

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# The main job on a real model: contracts the vertices of the "elephant" shipped in
-# Debian's libcgal-demo (taken as a point cloud, faces ignored) with MeshLab's own
-# meshlabserver and our plugin, then renders a picture of input and result.
+# The main job on a real model: the curve skeleton of the "elephant" shipped in Debian's
+# libcgal-demo (its vertices taken as a point cloud, faces ignored), computed by MeshLab's
+# own meshlabserver with our plugin and the shipped script; then a picture of the input,
+# the contracted points and the skeleton.
 # Usage: scripts/demo.sh [INPUT_FILE]   (any point cloud or mesh MeshLab reads)
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -16,24 +17,34 @@ else
   INPUT="$OUT/data/meshes/elephant.off"
 fi
 NAME="$(basename "${INPUT%.*}")"
-RESULT="$OUT/${NAME}_contracted.ply"
 ORIGINAL="$OUT/${NAME}_input.ply"
-PICTURE="$OUT/${NAME}_contraction.png"
+CONTRACTED="$OUT/${NAME}_contracted.ply"
+SEGMENTS="$OUT/${NAME}_segments.ply"
+SKELETON="$OUT/${NAME}_skeleton.ply"
+PICTURE="$OUT/${NAME}_skeleton.png"
 LOG="$OUT/${NAME}_meshlabserver.log"
 
-echo "Contracting $INPUT with meshlabserver (build/meshlab) ..."
-# meshlabserver needs an X server with GLX even for CPU filters, hence xvfb-run.
-xvfb-run -a "$ROOT/build/meshlab/bin/meshlabserver" -i "$INPUT" \
-  -o "$ORIGINAL" -l 0 -m sa -o "$RESULT" -l x -m sa \
-  -s "$ROOT/filter_pcskeleton/scripts/contract_point_cloud.mlx" >"$LOG" 2>&1 || {
-  cat "$LOG" >&2; echo "meshlabserver failed (log: $LOG)" >&2; exit 1; }
-sed -n 's/^LOG: [0-9]* /  /p' "$LOG"  # the filter's log lines
+# The shipped script, with the contracted layer kept for the picture.
+SCRIPT="$OUT/${NAME}_pipeline.mlx"
+sed 's/name="addContractedLayer" value="false"/name="addContractedLayer" value="true"/' \
+  "$ROOT/filter_pcskeleton/scripts/compute_curve_skeleton.mlx" >"$SCRIPT"
+
+echo "Computing the curve skeleton of $INPUT with meshlabserver (build/meshlab) ..."
+# meshlabserver needs an X server with GLX even for CPU filters, hence xvfb-run. The
+# script's Export Skeleton writes skeleton.ply (with edges) into the working directory.
+(cd "$OUT" && xvfb-run -a "$ROOT/build/meshlab/bin/meshlabserver" -i "$INPUT" \
+  -o "$ORIGINAL" -l 0 -m sa -o "$CONTRACTED" -l 1 -m sa -o "$SEGMENTS" -l 2 -m vc sa \
+  -s "$SCRIPT" >"$LOG" 2>&1) || { cat "$LOG" >&2; echo "meshlabserver failed (log: $LOG)" >&2; exit 1; }
+mv "$OUT/skeleton.ply" "$SKELETON"
+sed -n 's/^LOG: [0-9]* /  /p' "$LOG"  # the filters' log lines
 
 /usr/bin/python3 "$ROOT/scripts/render_points.py" "$PICTURE" \
-  "Laplacian contraction (Cao et al. 2010) of $NAME" "$ORIGINAL:input" "$RESULT:contracted"
+  "Curve skeleton by Laplacian contraction (Cao et al. 2010) of $NAME" \
+  "$ORIGINAL:input" "$CONTRACTED:contracted" "$SKELETON:skeleton"
 
 echo
-echo "Input points:      $ORIGINAL"
-echo "Contracted points: $RESULT"
-echo "Picture:           $PICTURE"
-echo "meshlabserver log: $LOG"
+echo "Skeleton (PLY with edges and radius): $SKELETON"
+echo "Points coloured by node:              $SEGMENTS"
+echo "Contracted points:                    $CONTRACTED"
+echo "Picture:                              $PICTURE"
+echo "meshlabserver log:                    $LOG"

@@ -1,9 +1,10 @@
 #!/usr/bin/python3
-"""Renders point clouds (ASCII PLY, OFF or XYZ) side by side into a PNG.
+"""Renders point clouds and skeletons (ASCII PLY, OFF or XYZ) side by side into a PNG.
 
 usage: render_points.py OUT.png TITLE FILE[:LABEL] [FILE[:LABEL] ...]
 Each file gets its own panel, all seen from the same viewpoint and scale; the first
-file is drawn faintly behind the others so that they can be compared with it.
+file is drawn faintly behind the others so that they can be compared with it. A PLY
+file with an edge element is drawn as a skeleton: its edges as lines, nodes as dots.
 """
 import sys
 
@@ -12,6 +13,22 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+
+
+def read_edges(path):
+    """The (a, b) vertex pairs of an ASCII PLY's edge element (elements in file order)."""
+    with open(path, "r", errors="replace") as f:
+        lines = f.read().splitlines()
+    if not lines or lines[0].strip() != "ply":
+        return []
+    end = lines.index("end_header")
+    elements = [(l.split()[1], int(l.split()[2])) for l in lines[:end] if l.startswith("element")]
+    row = end + 1
+    for name, count in elements:
+        if name == "edge":
+            return [tuple(int(v) for v in l.split()[:2]) for l in lines[row:row + count]]
+        row += count
+    return []
 
 
 def read_points(path):
@@ -41,27 +58,33 @@ def main():
     clouds = []
     for item in inputs:
         path, _, label = item.partition(":")
-        clouds.append((read_points(path), label or path))
-    everything = np.vstack([c for c, _ in clouds])
+        clouds.append((read_points(path), label or path, read_edges(path)))
+    everything = np.vstack([c for c, _, _ in clouds])
     lo, hi = everything.min(axis=0), everything.max(axis=0)
     centre, half = (lo + hi) / 2, (hi - lo).max() / 2
     fig = plt.figure(figsize=(5 * len(clouds), 5.4), dpi=110)
     fig.suptitle(title)
-    for i, (points, label) in enumerate(clouds):
+    for i, (points, label, edges) in enumerate(clouds):
         ax = fig.add_subplot(1, len(clouds), i + 1, projection="3d")
         if i == 0:
             ax.scatter(*points.T, s=1.5, c=points[:, 2], cmap="viridis", depthshade=True)
         else:
             reference = clouds[0][0]
             ax.scatter(*reference.T, s=0.5, c="lightgray", alpha=0.25, depthshade=False)
-            ax.scatter(*points.T, s=2.5, c="crimson", depthshade=False)
+            if edges:
+                for a, b in edges:
+                    ax.plot(*points[[a, b]].T, color="crimson", linewidth=2)
+                ax.scatter(*points.T, s=8, c="black", depthshade=False)
+            else:
+                ax.scatter(*points.T, s=2.5, c="crimson", depthshade=False)
         for axis, c in zip("xyz", centre):
             getattr(ax, f"set_{axis}lim")(c - half, c + half)
         ax.set_box_aspect((1, 1, 1))
         ax.view_init(elev=20, azim=-60)
         ax.set_axis_off()
-        ax.set_title(f"{label}\n{len(points)} points")
-    fig.tight_layout()
+        count = f"{len(points)} nodes, {len(edges)} edges" if edges else f"{len(points)} points"
+        ax.set_title(f"{label}\n{count}")
+    fig.tight_layout(rect=(0, 0, 1, 0.93))
     fig.savefig(out)
 
 

@@ -155,19 +155,13 @@ void writeSkeletonPly(const SkeletonGraph& skeleton, const std::string& path) {
     }
 }
 
-void writeSkeletonObj(const SkeletonGraph& skeleton, const std::string& path) {
+// .obj (v/l) and .cg (v/e): a header line, the nodes, then 1-based edges.
+void writeSkeletonLines(const SkeletonGraph& skeleton, const std::string& path, const std::string& header,
+                        char edgeKeyword) {
     std::ofstream out = openForWriting(path);
-    out << "# curve skeleton: " << skeleton.nodeCount() << " nodes, " << skeleton.edgeCount() << " edges\n";
+    out << header << '\n';
     for (const Point& p : skeleton.nodes) out << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
-    for (const Edge& e : skeleton.edges) out << "l " << e[0] + 1 << ' ' << e[1] + 1 << '\n';
-    finishWriting(out, path);
-}
-
-void writeSkeletonCg(const SkeletonGraph& skeleton, const std::string& path) {
-    std::ofstream out = openForWriting(path);
-    out << "# D:3 NV:" << skeleton.nodeCount() << " NE:" << skeleton.edgeCount() << '\n';
-    for (const Point& p : skeleton.nodes) out << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
-    for (const Edge& e : skeleton.edges) out << "e " << e[0] + 1 << ' ' << e[1] + 1 << '\n';
+    for (const Edge& e : skeleton.edges) out << edgeKeyword << ' ' << e[0] + 1 << ' ' << e[1] + 1 << '\n';
     finishWriting(out, path);
 }
 
@@ -270,8 +264,15 @@ bool isSkeletonFileName(const std::string& path) {
 void writeSkeleton(const SkeletonGraph& skeleton, const std::string& path) {
     const std::string ext = extensionOf(path);
     if (ext == "ply") return writeSkeletonPly(skeleton, path);
-    if (ext == "obj") return writeSkeletonObj(skeleton, path);
-    if (ext == "cg") return writeSkeletonCg(skeleton, path);
+    const std::string counts = std::to_string(skeleton.nodeCount()) + " nodes, " +
+                               std::to_string(skeleton.edgeCount()) + " edges";
+    if (ext == "obj") return writeSkeletonLines(skeleton, path, "# curve skeleton: " + counts, 'l');
+    if (ext == "cg") {
+        return writeSkeletonLines(skeleton, path,
+                                  "# D:3 NV:" + std::to_string(skeleton.nodeCount()) +
+                                      " NE:" + std::to_string(skeleton.edgeCount()),
+                                  'e');
+    }
     throw InvalidInput("Cannot write '" + path + "': skeletons are written as .ply, .obj or .cg.");
 }
 
