@@ -77,6 +77,12 @@ void loadWithVcg(IoMesh& mesh, const std::string& path, const std::string& ext, 
     if (error) fail(path, message + ".");
 }
 
+void saveWithVcg(IoMesh& mesh, const std::string& path, int mask, bool binary) {
+    if (vcg::tri::io::ExporterPLY<IoMesh>::Save(mesh, path.c_str(), mask, binary) != 0) {
+        throw InvalidInput("Cannot write '" + path + "': the file cannot be created.");
+    }
+}
+
 PointList readXyz(const std::string& path) {
     std::ifstream in = openForReading(path);
     PointList points;
@@ -150,9 +156,7 @@ void writeSkeletonPly(const SkeletonGraph& skeleton, const std::string& path) {
     for (const Edge& e : skeleton.edges) vcg::tri::Allocator<IoMesh>::AddEdge(mesh, e[0], e[1]);
     const int mask = vcg::tri::io::Mask::IOM_VERTCOORD | vcg::tri::io::Mask::IOM_VERTQUALITY |
                      vcg::tri::io::Mask::IOM_VERTRADIUS | vcg::tri::io::Mask::IOM_EDGEINDEX;
-    if (vcg::tri::io::ExporterPLY<IoMesh>::Save(mesh, path.c_str(), mask, /*binary=*/false) != 0) {
-        throw InvalidInput("Cannot write '" + path + "': the file cannot be created.");
-    }
+    saveWithVcg(mesh, path, mask, /*binary=*/false);
 }
 
 // .obj (v/l) and .cg (v/e): a header line, the nodes, then 1-based edges.
@@ -251,9 +255,7 @@ void writePointCloud(const PointList& points, const std::string& path) {
     IoMesh mesh;
     auto vertex = vcg::tri::Allocator<IoMesh>::AddVertices(mesh, points.size());
     for (const Point& p : points) (vertex++)->P() = vcg::Point3d(p.x(), p.y(), p.z());
-    if (vcg::tri::io::ExporterPLY<IoMesh>::Save(mesh, path.c_str(), vcg::tri::io::Mask::IOM_VERTCOORD, true) != 0) {
-        throw InvalidInput("Cannot write '" + path + "': the file cannot be created.");
-    }
+    saveWithVcg(mesh, path, vcg::tri::io::Mask::IOM_VERTCOORD, /*binary=*/true);
 }
 
 bool isSkeletonFileName(const std::string& path) {
@@ -264,15 +266,11 @@ bool isSkeletonFileName(const std::string& path) {
 void writeSkeleton(const SkeletonGraph& skeleton, const std::string& path) {
     const std::string ext = extensionOf(path);
     if (ext == "ply") return writeSkeletonPly(skeleton, path);
-    const std::string counts = std::to_string(skeleton.nodeCount()) + " nodes, " +
-                               std::to_string(skeleton.edgeCount()) + " edges";
-    if (ext == "obj") return writeSkeletonLines(skeleton, path, "# curve skeleton: " + counts, 'l');
-    if (ext == "cg") {
-        return writeSkeletonLines(skeleton, path,
-                                  "# D:3 NV:" + std::to_string(skeleton.nodeCount()) +
-                                      " NE:" + std::to_string(skeleton.edgeCount()),
-                                  'e');
+    const std::string nodes = std::to_string(skeleton.nodeCount()), edges = std::to_string(skeleton.edgeCount());
+    if (ext == "obj") {
+        return writeSkeletonLines(skeleton, path, "# curve skeleton: " + nodes + " nodes, " + edges + " edges", 'l');
     }
+    if (ext == "cg") return writeSkeletonLines(skeleton, path, "# D:3 NV:" + nodes + " NE:" + edges, 'e');
     throw InvalidInput("Cannot write '" + path + "': skeletons are written as .ply, .obj or .cg.");
 }
 

@@ -1,7 +1,7 @@
 #include "pcskeleton/spatial_index.h"
 
 #include <CGAL/Fuzzy_sphere.h>
-#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Kd_tree.h>
 #include <CGAL/Search_traits_3.h>
 #include <CGAL/Search_traits_adapter.h>
 #include <CGAL/Simple_cartesian.h>
@@ -18,8 +18,7 @@ using Kernel = CGAL::Simple_cartesian<double>;
 using Point3 = Kernel::Point_3;
 using PointMap = CGAL::Pointer_property_map<Point3>::type;
 using SearchTraits = CGAL::Search_traits_adapter<std::size_t, PointMap, CGAL::Search_traits_3<Kernel>>;
-using NeighbourSearch = CGAL::Orthogonal_k_neighbor_search<SearchTraits>;
-using KdTree = NeighbourSearch::Tree;
+using KdTree = CGAL::Kd_tree<SearchTraits>;
 using Sphere = CGAL::Fuzzy_sphere<SearchTraits>;
 
 Point3 toCgal(const Point& p) { return Point3(p.x(), p.y(), p.z()); }
@@ -53,12 +52,6 @@ void PointIndex::withinRadius(const Point& centre, double radius, std::vector<in
     std::vector<std::size_t> hits;
     tree_->tree.search(std::back_inserter(hits), query);
     found.assign(hits.begin(), hits.end());
-}
-
-int PointIndex::nearest(const Point& p) const {
-    if (tree_->cgalPoints.empty()) return -1;
-    NeighbourSearch search(tree_->tree, toCgal(p), 1, 0, true, NeighbourSearch::Distance(tree_->pointMap));
-    return static_cast<int>(search.begin()->first);
 }
 
 }  // namespace pcskeleton

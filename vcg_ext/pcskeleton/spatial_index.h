@@ -1,5 +1,5 @@
-// Spatial queries on a fixed point list (CGAL's kd-tree), for the steps that need them
-// after the 1-rings: sampling the contracted points, correspondence, tests and tools.
+// Radius queries on a fixed point list (CGAL's kd-tree), for the steps that need them
+// after the 1-rings (sampling the contracted points).
 #pragma once
 
 #include "pcskeleton/point_cloud_input.h"
@@ -19,8 +19,6 @@ public:
 
     // Replaces `found` with the indices of the points within `radius` of `centre`.
     void withinRadius(const Point& centre, double radius, std::vector<int>& found) const;
-    // Index of the point nearest to `p` (-1 when the list is empty).
-    int nearest(const Point& p) const;
 
 private:
     struct Tree;
