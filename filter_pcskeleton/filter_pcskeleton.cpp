@@ -319,17 +319,16 @@ bool FilterPCSkeletonPlugin::computeSkeleton(MeshDocument& md, const RichParamet
     const pcskeleton::ContractionParameters settings = readContractionParameters(parameters);
     const pcskeleton::ThinningParameters thinning = readThinningParameters(parameters);
     const pcskeleton::ProgressCallback progress = progressOf(cb);
+    pcskeleton::checkThinningParameters(thinning);  // before the contraction, not after it
 
     pcskeleton::LaplacianContraction contraction(input.points, settings, pcskeleton::progressRange(progress, 0, 25));
     logContractionStart(source, contraction, input.points.size());
-    pcskeleton::StageSeconds seconds;
-    seconds.neighbourhoods = contraction.neighbourhoodSeconds();
     const int done = contract(contraction, settings.maxIterations, [&](int iteration) {
         pcskeleton::report(progress, 25 + 65 * iteration / settings.maxIterations, "Contracting");
     });
-    for (const auto& r : contraction.history()) seconds.contraction += r.seconds;
     Log("Contraction: %d iteration(s), %s.", done, pcskeleton::describe(contraction.stopReason()).c_str());
 
+    pcskeleton::StageSeconds seconds;
     const pcskeleton::SkeletonGraph skeleton =
         pcskeleton::skeletonFromContraction(contraction, thinning, &seconds, pcskeleton::progressRange(progress, 90, 100));
     if (parameters.getBool("addContractedLayer")) {
@@ -341,46 +340,9 @@ bool FilterPCSkeletonPlugin::computeSkeleton(MeshDocument& md, const RichParamet
 
 bool FilterPCSkeletonPlugin::skeletonFromContracted(MeshDocument& md, const RichParameterList& parameters,
                                                     vcg::CallBackPos* cb) {
-    MeshModel& contractedLayer = *md.mm();
     MeshModel* source = parameters.getMesh("sourceLayer");
-    auto inputIndex = vcg::tri::Allocator<CMeshO>::FindPerVertexAttribute<int>(contractedLayer.cm, kInputIndexAttribute);
-    if (!vcg::tri::Allocator<CMeshO>::IsValidHandle(contractedLayer.cm, inputIndex)) {
-        errorMessage = QString("Layer '%1' was not made by Contract Point Cloud (Laplacian): it has no "
-                               "pcs_input_index attribute. Select the contracted layer, or use Compute Curve "
-                               "Skeleton on the original points.").arg(contractedLayer.label());
-        return false;
-    }
-    if (source == nullptr || source == &contractedLayer) {
-        errorMessage = "Choose as original points the layer that was contracted, not the contracted layer itself.";
-        return false;
-    }
-    // Pair every contracted point with its source vertex.
-    const LayerPoints input = collectPoints(source->cm);
-    std::vector<int> pointOfVertex(source->cm.vert.size(), -1);
-    for (std::size_t i = 0; i < input.vertexIndex.size(); ++i) pointOfVertex[input.vertexIndex[i]] = int(i);
-    pcskeleton::PointList contracted(input.points.size());
-    std::vector<bool> seen(input.points.size(), false);
-    for (std::size_t v = 0; v < contractedLayer.cm.vert.size(); ++v) {
-        const CVertexO& vertex = contractedLayer.cm.vert[v];
-        if (vertex.IsD()) continue;
-        const int sourceVertex = inputIndex[v];
-        const int point = sourceVertex >= 0 && sourceVertex < int(pointOfVertex.size()) ? pointOfVertex[sourceVertex] : -1;
-        if (point < 0) {
-            errorMessage = QString("Layer '%1' does not match '%2': contracted point %3 refers to vertex %4, which "
-                                   "'%2' does not have. Choose the layer that was contracted.")
-                               .arg(contractedLayer.label(), source->label()).arg(v).arg(sourceVertex);
-            return false;
-        }
-        contracted[point] = pcskeleton::Point(vertex.cP()[0], vertex.cP()[1], vertex.cP()[2]);
-        seen[point] = true;
-    }
-    const auto missing = std::count(seen.begin(), seen.end(), false);
-    if (missing > 0) {
-        errorMessage = QString("Layer '%1' lacks %2 of the %3 points of '%4': it was made from another layer, or "
-                               "points were deleted since. Contract '%4' again.")
-                           .arg(contractedLayer.label()).arg(missing).arg(input.points.size()).arg(source->label());
-        return false;
-    }
+    LayerPoints input;
+    const pcskeleton::PointList contracted = readContractedLayer(*md.mm(), source, input);
     pcskeleton::StageSeconds seconds;
     const pcskeleton::SkeletonGraph skeleton = pcskeleton::skeletonFromContractedPoints(
         input.points, contracted, parameters.getInt("k"), readThinningParameters(parameters), &seconds, progressOf(cb));

@@ -46,6 +46,46 @@ LayerPoints collectPoints(const CMeshO& mesh) {
     return input;
 }
 
+PointList readContractedLayer(const MeshModel& contracted, const MeshModel* sourceLayer, LayerPoints& input) {
+    CMeshO& m = const_cast<CMeshO&>(contracted.cm);  // vcglib's attribute lookup is not const
+    auto inputIndex = Allocator::FindPerVertexAttribute<int>(m, kInputIndexAttribute);
+    if (!Allocator::IsValidHandle(m, inputIndex)) {
+        throw InvalidInput(QString("Layer '%1' was not made by Contract Point Cloud (Laplacian): it has no "
+                                   "pcs_input_index attribute. Select the contracted layer, or use Compute Curve "
+                                   "Skeleton on the original points.").arg(contracted.label()).toStdString());
+    }
+    if (sourceLayer == nullptr || sourceLayer == &contracted) {
+        throw InvalidInput("Choose as original points the layer that was contracted, not the contracted layer itself.");
+    }
+    const MeshModel& source = *sourceLayer;
+    input = collectPoints(source.cm);
+    std::vector<int> pointOfVertex(source.cm.vert.size(), -1);
+    for (std::size_t i = 0; i < input.vertexIndex.size(); ++i) pointOfVertex[input.vertexIndex[i]] = int(i);
+    PointList positions(input.points.size());
+    std::vector<bool> seen(input.points.size(), false);
+    for (std::size_t v = 0; v < m.vert.size(); ++v) {
+        const CVertexO& vertex = m.vert[v];
+        if (vertex.IsD()) continue;
+        const int sourceVertex = inputIndex[v];
+        const int point = sourceVertex >= 0 && sourceVertex < int(pointOfVertex.size()) ? pointOfVertex[sourceVertex] : -1;
+        if (point < 0) {
+            throw InvalidInput(QString("Layer '%1' does not match '%2': contracted point %3 refers to vertex %4, "
+                                       "which '%2' does not have. Choose the layer that was contracted.")
+                                   .arg(contracted.label(), source.label()).arg(v).arg(sourceVertex).toStdString());
+        }
+        positions[point] = Point(vertex.cP()[0], vertex.cP()[1], vertex.cP()[2]);
+        seen[point] = true;
+    }
+    const auto missing = std::count(seen.begin(), seen.end(), false);
+    if (missing > 0) {
+        throw InvalidInput(QString("Layer '%1' lacks %2 of the %3 points of '%4': it was made from another layer, "
+                                   "or points were deleted since. Contract '%4' again.")
+                               .arg(contracted.label()).arg(missing).arg(input.points.size()).arg(source.label())
+                               .toStdString());
+    }
+    return positions;
+}
+
 QString derivedLabel(const MeshModel& source, const QString& what) {
     return QString("%1 %2").arg(QFileInfo(source.label()).completeBaseName(), what);
 }

@@ -34,6 +34,11 @@ QString derivedLabel(const MeshModel& source, const QString& what);
 
 // A point layer with `positions` (one per point of `input`), each vertex remembering its
 // source vertex in pcs_input_index; vertex colours are copied when the source has them.
+// Reads a layer made by the contraction filter: fills `input` with the live points of
+// `source` and returns the contracted position of each. Throws InvalidInput when
+// `contracted` was not made by that filter, or not from `source`.
+PointList readContractedLayer(const MeshModel& contracted, const MeshModel* source, LayerPoints& input);
+
 MeshModel* addPointLayer(MeshDocument& md, const MeshModel& source, const LayerPoints& input,
                          const PointList& positions, const QString& label);
 

@@ -4,7 +4,6 @@
 #include "pcskeleton/skeleton_thinning.h"
 
 #include <chrono>
-#include <cmath>
 #include <sstream>
 
 namespace pcskeleton {
@@ -15,31 +14,13 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-double boundingBoxDiagonal(const PointList& points) {
-    Point low = points.front(), high = points.front();
-    for (const Point& p : points) {
-        low = low.cwiseMin(p);
-        high = high.cwiseMax(p);
-    }
-    return (high - low).norm();
-}
-
-void checkThinningParameters(const ThinningParameters& parameters) {
-    if (!(parameters.sampleRadius > 0.0 && parameters.sampleRadius < 1.0)) {
-        std::ostringstream message;
-        message << "The sampling radius must be a fraction of the bounding-box diagonal between 0 and 1 "
-                << "(the paper uses 0.02); got " << parameters.sampleRadius << ".";
-        throw InvalidInput(message.str());
-    }
-}
-
 // Steps 4-5 on contracted positions of the distinct points (normalised frame).
 SkeletonGraph thinAndEmbed(const NormalizedCloud& cloud, const OneRings& rings, const PointList& contracted,
                            const ThinningParameters& parameters, StageSeconds* seconds,
                            const ProgressCallback& progress) {
     checkThinningParameters(parameters);
     auto start = std::chrono::steady_clock::now();
-    const double radius = parameters.sampleRadius * boundingBoxDiagonal(cloud.points);
+    const double radius = parameters.sampleRadius * cloud.diagonal;
     const ThinnedGraph thinned = thinContractedPoints(contracted, rings, radius, progress);
     if (seconds) seconds->thinning = secondsSince(start);
     start = std::chrono::steady_clock::now();
@@ -50,8 +31,22 @@ SkeletonGraph thinAndEmbed(const NormalizedCloud& cloud, const OneRings& rings, 
 
 }  // namespace
 
+void checkThinningParameters(const ThinningParameters& parameters) {
+    if (!(parameters.sampleRadius > 0.0 && parameters.sampleRadius < 1.0)) {
+        std::ostringstream message;
+        message << "The sampling radius must be a fraction of the bounding-box diagonal between 0 and 1 "
+                << "(the paper uses 0.02); got " << parameters.sampleRadius << ".";
+        throw InvalidInput(message.str());
+    }
+}
+
 SkeletonGraph skeletonFromContraction(const LaplacianContraction& contraction, const ThinningParameters& parameters,
                                       StageSeconds* seconds, const ProgressCallback& progress) {
+    if (seconds) {
+        seconds->neighbourhoods = contraction.neighbourhoodSeconds();
+        seconds->contraction = 0;
+        for (const IterationReport& r : contraction.history()) seconds->contraction += r.seconds;
+    }
     return thinAndEmbed(contraction.cloud(), contraction.rings(), contraction.normalizedPositions(), parameters,
                         seconds, progress);
 }
@@ -63,8 +58,6 @@ SkeletonResult computeCurveSkeleton(const PointList& input, const SkeletonParame
     LaplacianContraction contraction(input, parameters.contraction, progressRange(progress, 0, 25));
     contraction.iterateToEnd(progressRange(progress, 25, 90));
     result.contraction = contraction.result();
-    result.seconds.neighbourhoods = result.contraction.neighbourhoodSeconds;
-    for (const IterationReport& r : result.contraction.iterations) result.seconds.contraction += r.seconds;
     result.skeleton =
         skeletonFromContraction(contraction, parameters.thinning, &result.seconds, progressRange(progress, 90, 100));
     return result;
@@ -85,16 +78,9 @@ SkeletonGraph skeletonFromContractedPoints(const PointList& input, const PointLi
     const OneRings rings = OneRings::compute(cloud.points, neighbours, progressRange(progress, 0, 50));
     if (seconds) seconds->neighbourhoods = secondsSince(start);
 
+    rejectNonFinite(contracted, "contracted points", "Contract the input again.");
     PointList contractedUnique(cloud.points.size());
-    for (std::size_t i = 0; i < input.size(); ++i) {
-        const Point& p = contracted[i];
-        if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z())) {
-            std::ostringstream message;
-            message << "Contracted point " << i << " has a NaN or infinite coordinate.";
-            throw InvalidInput(message.str());
-        }
-        contractedUnique[cloud.uniqueIndex[i]] = cloud.toNormalizedFrame(p);
-    }
+    for (std::size_t i = 0; i < input.size(); ++i) contractedUnique[cloud.uniqueIndex[i]] = cloud.toNormalizedFrame(contracted[i]);
     return thinAndEmbed(cloud, rings, contractedUnique, parameters, seconds, progressRange(progress, 50, 100));
 }
 

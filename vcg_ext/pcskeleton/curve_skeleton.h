@@ -26,7 +26,6 @@ struct SkeletonParameters {
 
 struct StageSeconds {
     double neighbourhoods = 0, contraction = 0, thinning = 0, embedding = 0;
-    double total() const { return neighbourhoods + contraction + thinning + embedding; }
 };
 
 struct SkeletonResult {
@@ -35,10 +34,14 @@ struct SkeletonResult {
     StageSeconds seconds;
 };
 
+// Throws InvalidInput for parameters thinning cannot use; call it before a long
+// contraction whose result would be thinned with them.
+void checkThinningParameters(const ThinningParameters& parameters);
+
 SkeletonResult computeCurveSkeleton(const PointList& input, const SkeletonParameters& parameters = {},
                                     const ProgressCallback& progress = {});
 
-// Steps 4-5 on the current state of a contraction. Fills seconds.thinning/embedding.
+// Steps 4-5 on the current state of a contraction. Fills every stage of `seconds`.
 SkeletonGraph skeletonFromContraction(const LaplacianContraction& contraction, const ThinningParameters& parameters,
                                       StageSeconds* seconds = nullptr, const ProgressCallback& progress = {});
 

@@ -8,24 +8,23 @@
 
 namespace pcskeleton {
 
-namespace {
-
-void rejectNonFinite(const PointList& input) {
+void rejectNonFinite(const PointList& points, const std::string& what, const std::string& advice) {
     std::size_t bad = 0, first = 0;
-    for (std::size_t i = 0; i < input.size(); ++i) {
-        if (!input[i].allFinite()) {
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        if (!points[i].allFinite()) {
             if (bad == 0) first = i;
             ++bad;
         }
     }
     if (bad > 0) {
         std::ostringstream msg;
-        msg << bad << " of " << input.size()
-            << " points have NaN or infinite coordinates (first: point " << first
-            << "). Remove them first (e.g. Filters > Cleaning and Repairing).";
+        msg << bad << " of " << points.size() << ' ' << what
+            << " have NaN or infinite coordinates (first: point " << first << "). " << advice;
         throw InvalidInput(msg.str());
     }
 }
+
+namespace {
 
 // Sorting indices lexicographically groups exact duplicates; each group keeps the
 // position of its first member.
@@ -80,7 +79,7 @@ void rejectCollinear(const PointList& points) {
 
 NormalizedCloud normalizeCloud(const PointList& input, std::size_t minimumUniquePoints) {
     if (input.empty()) throw InvalidInput("The point layer is empty.");
-    rejectNonFinite(input);
+    rejectNonFinite(input, "points", "Remove them first (e.g. Filters > Cleaning and Repairing).");
 
     NormalizedCloud cloud;
     mergeExactDuplicates(input, cloud);
@@ -100,6 +99,7 @@ NormalizedCloud normalizeCloud(const PointList& input, std::size_t minimumUnique
     }
     cloud.center = 0.5 * (lo + hi);
     cloud.scale = kNormalizedLongestSide / (hi - lo).maxCoeff();
+    cloud.diagonal = (hi - lo).norm() * cloud.scale;
     for (Point& p : cloud.points) p = (p - cloud.center) * cloud.scale;
 
     rejectCollinear(cloud.points);

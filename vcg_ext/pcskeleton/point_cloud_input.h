@@ -27,6 +27,7 @@ struct NormalizedCloud {
     std::vector<int> uniqueIndex;  // for each input point, its index in `points`
     Point center = Point::Zero();
     double scale = 1.0;            // normalised = (input - center) * scale
+    double diagonal = 0.0;         // bounding-box diagonal, normalised frame
 
     Point toInputFrame(const Point& p) const { return p / scale + center; }
     Point toNormalizedFrame(const Point& p) const { return (p - center) * scale; }
@@ -39,5 +40,9 @@ constexpr double kNormalizedLongestSide = 1.6;
 // for: no points; NaN or infinite coordinates; fewer than `minimumUniquePoints`
 // distinct points; all points (numerically) on one line.
 NormalizedCloud normalizeCloud(const PointList& input, std::size_t minimumUniquePoints);
+
+// Throws InvalidInput when a point has a NaN or infinite coordinate, naming how many and
+// the first: "<count> of <n> <what> have NaN or infinite coordinates (first: point i). <advice>"
+void rejectNonFinite(const PointList& points, const std::string& what, const std::string& advice);
 
 }  // namespace pcskeleton
