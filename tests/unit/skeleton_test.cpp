@@ -135,6 +135,17 @@ TEST(CurveSkeleton, CorrespondenceAndRadiiDescribeTheTube) {
     }
 }
 
+// An outlier far from the torus becomes a node owning one point: its radius (a distance
+// to itself, 0) is taken from its neighbours, so every skeleton can be edited as it comes.
+TEST(CurveSkeleton, EveryNodeHasAPositiveRadiusEvenWithOutliers) {
+    PointList cloud = shapes::torus(3000, 1.0, 0.3);
+    cloud.emplace_back(0, 0, 1.5);
+    cloud.emplace_back(2.5, 0, 0.8);
+    const SkeletonResult result = computeCurveSkeleton(cloud);
+    EXPECT_EQ(invariantViolation(result.skeleton), "");
+    for (double r : result.skeleton.radii) EXPECT_GT(r, 0.0);
+}
+
 TEST(CurveSkeleton, TwoStagesEqualOneCall) {
     const PointList cloud = shapes::torus(3000, 1.0, 0.3);
     const SkeletonResult oneCall = computeCurveSkeleton(cloud);

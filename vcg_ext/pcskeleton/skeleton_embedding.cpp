@@ -27,6 +27,7 @@ SkeletonGraph embedSkeleton(const ThinnedGraph& graph, const NormalizedCloud& cl
     }
     skeleton.pointNode.reserve(cloud.inputSize());
     for (int unique : cloud.uniqueIndex) skeleton.pointNode.push_back(graph.owner[unique]);
+    fillMissingRadii(skeleton);  // a node owning one point (an outlier) has radius 0
     return skeleton;
 }
 

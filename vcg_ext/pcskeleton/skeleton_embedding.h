@@ -1,6 +1,7 @@
 // Step 5 of the paper (end of Sec. III): the thinned graph is placed back inside the
 // shape. Each node moves to the centre of its corresponding input points (contracted
-// points can sit off-centre); its radius is their mean distance to that centre.
+// points can sit off-centre); its radius is their mean distance to that centre
+// (a node with a single point takes its neighbours' radius: see fillMissingRadii).
 #pragma once
 
 #include "pcskeleton/point_cloud_input.h"

@@ -45,4 +45,16 @@ std::vector<int> nodeDegrees(std::size_t nodeCount, const std::vector<Edge>& edg
 // Sorts the edges, orders each edge's ends, drops duplicates and self-loops.
 void normalizeEdges(std::vector<Edge>& edges);
 
+// Empty when the graph is valid, else the first broken rule, meant for the user: one
+// radius per node, finite positions, edges between existing nodes, no self-loop, no
+// duplicate edge, radii positive and finite, correspondence naming existing nodes or -1.
+std::string invariantViolation(const SkeletonGraph& graph);
+
+// Gives every node whose radius is missing (zero, negative, not finite) a usable one: the
+// mean radius of its nearest nodes along the bones that have one; in a component with no
+// radius at all, half its mean bone length (or 1% of the nodes' extent when it has no
+// bone). A node owning a single point, or a skeleton read from a format without radii,
+// needs this before editing or reconstruction. Returns how many radii were filled.
+int fillMissingRadii(SkeletonGraph& graph);
+
 }  // namespace pcskeleton
