@@ -3,6 +3,7 @@
 #include "skeleton_layer.h"
 
 #include <pcskeleton/curve_skeleton.h>
+#include <pcskeleton/skeleton_editing.h>
 #include <pcskeleton/skeleton_io.h>
 
 #include <vcg/complex/allocate.h>
@@ -20,6 +21,12 @@ const char* const kPaperReference =
     "<br><br>See: <i>Junjie Cao, Andrea Tagliasacchi, Matt Olson, Hao Zhang, Zhixun Su</i><br>"
     "<b>\"Point Cloud Skeletons via Laplacian-Based Contraction\"</b><br>"
     "Shape Modeling International (SMI) 2010, pages 187-197.";
+
+const char* const kEditHelp =
+    "<br><br>The skeleton layer is changed in place (the points layer is not). Select nodes with MeshLab's "
+    "selection tools or filters, e.g. Filters > Selection > Conditional Vertex Selection with (x > 0), or "
+    "Select by Vertex Quality to pick nodes by radius. The same edits, with undo, are in the Edit Skeleton "
+    "tool.";
 
 const char* const kNeighbourHelp =
     "Number of nearest neighbours whose tangent-plane Delaunay triangulation gives each point its 1-ring. "
@@ -102,6 +109,20 @@ MeshModel* likelySourceOf(MeshDocument& md, MeshModel* contracted) {
     return fallback ? fallback : contracted;
 }
 
+// Mean radius of the selected nodes (of all nodes if none is selected); 0 when the layer
+// is not a skeleton.
+float defaultRadiusOfSelection(const MeshModel* layer) {
+    if (!layer || !notASkeletonReason(*layer).isEmpty()) return 0.0f;
+    const pcskeleton::SkeletonGraph skeleton = readSkeletonLayer(*layer);
+    std::vector<int> nodes = selectedNodes(*layer);
+    if (nodes.empty()) {
+        for (std::size_t n = 0; n < skeleton.nodeCount(); ++n) nodes.push_back(int(n));
+    }
+    double sum = 0.0;
+    for (int n : nodes) sum += skeleton.radii[n];
+    return nodes.empty() ? 0.0f : float(sum / nodes.size());
+}
+
 // "<folder of the points' file>/<layer label>.ply": next to the data rather than in
 // whatever directory MeshLab was started from.
 QString defaultSkeletonFileName(MeshDocument& md) {
@@ -126,7 +147,9 @@ QString defaultSkeletonFileName(MeshDocument& md) {
 }  // namespace
 
 FilterPCSkeletonPlugin::FilterPCSkeletonPlugin() {
-    typeList << FP_CONTRACT_POINT_CLOUD << FP_COMPUTE_SKELETON << FP_SKELETON_FROM_CONTRACTED << FP_EXPORT_SKELETON;
+    typeList << FP_CONTRACT_POINT_CLOUD << FP_COMPUTE_SKELETON << FP_SKELETON_FROM_CONTRACTED << FP_EXPORT_SKELETON
+             << FP_DELETE_SELECTED_NODES << FP_CONNECT_SELECTED_NODES << FP_MERGE_SELECTED_NODES
+             << FP_SET_RADIUS_OF_SELECTED_NODES;
     for (FilterIDType type : typeList) actionList << new QAction(filterName(type), this);
 }
 
@@ -138,6 +161,10 @@ QString FilterPCSkeletonPlugin::filterName(FilterIDType filter) const {
         case FP_COMPUTE_SKELETON: return "Compute Curve Skeleton (Laplacian Contraction)";
         case FP_SKELETON_FROM_CONTRACTED: return "Skeleton from Contracted Points";
         case FP_EXPORT_SKELETON: return "Export Skeleton (PLY with edges, OBJ, CG)";
+        case FP_DELETE_SELECTED_NODES: return "Skeleton: Delete Selected Nodes";
+        case FP_CONNECT_SELECTED_NODES: return "Skeleton: Connect the Two Selected Nodes";
+        case FP_MERGE_SELECTED_NODES: return "Skeleton: Merge Selected Nodes";
+        case FP_SET_RADIUS_OF_SELECTED_NODES: return "Skeleton: Set Radius of Selected Nodes";
     }
     return {};
 }
@@ -173,6 +200,22 @@ QString FilterPCSkeletonPlugin::filterInfo(FilterIDType filter) const {
                 "cannot express. The format follows the file extension: .ply (vertices with radius and "
                 "quality, element edge; MeshLab opens it again with its edges), .obj (v and l lines) or .cg "
                 "(the Starlab curve-skeleton format used by skeleton benchmarks; no radius).");
+        case FP_DELETE_SELECTED_NODES:
+            return QString("Deletes the selected nodes of the current skeleton layer and their bones, e.g. to cut a "
+                           "wrong loop or remove a spur. Their points then belong to no node.") + kEditHelp;
+        case FP_CONNECT_SELECTED_NODES:
+            return QString("Adds a bone between the two selected nodes of the current skeleton layer, e.g. to "
+                           "restore a loop or a limb the scan missed. Exactly two nodes must be selected.") +
+                   kEditHelp;
+        case FP_MERGE_SELECTED_NODES:
+            return QString("Replaces the selected nodes of the current skeleton layer by one node at their "
+                           "centroid, with their mean radius, all their bones to other nodes and all their points; "
+                           "bones between them disappear (a small spurious loop closes up). The merged node stays "
+                           "selected.") + kEditHelp;
+        case FP_SET_RADIUS_OF_SELECTED_NODES:
+            return QString("Sets the radius of the selected nodes of the current skeleton layer (the thickness "
+                           "reconstruction gives the shape there). The radius is also the vertex quality.") +
+                   kEditHelp;
     }
     return {};
 }
@@ -181,7 +224,17 @@ MeshFilterInterface::FilterClass FilterPCSkeletonPlugin::getClass(QAction*) { re
 
 int FilterPCSkeletonPlugin::getPreConditions(QAction*) const { return MeshModel::MM_VERTCOORD; }
 
-int FilterPCSkeletonPlugin::postCondition(QAction*) const { return MeshModel::MM_NONE; }
+int FilterPCSkeletonPlugin::postCondition(QAction* action) const {
+    switch (ID(action)) {
+        case FP_DELETE_SELECTED_NODES:
+        case FP_CONNECT_SELECTED_NODES:
+        case FP_MERGE_SELECTED_NODES:
+        case FP_SET_RADIUS_OF_SELECTED_NODES:
+            return MeshModel::MM_GEOMETRY_AND_TOPOLOGY_CHANGE | MeshModel::MM_VERTQUALITY |
+                   MeshModel::MM_VERTFLAGSELECT;
+    }
+    return MeshModel::MM_NONE;  // the other filters add layers and change none
+}
 
 MeshFilterInterface::FILTER_ARITY FilterPCSkeletonPlugin::filterArity(QAction* action) const {
     return ID(action) == FP_SKELETON_FROM_CONTRACTED ? FIXED : SINGLE_MESH;
@@ -217,6 +270,11 @@ void FilterPCSkeletonPlugin::initParameterSet(QAction* action, MeshDocument& md,
                 "Where to write the skeleton; .ply, .obj or .cg. An existing file is replaced."));
             break;
         }
+        case FP_SET_RADIUS_OF_SELECTED_NODES:
+            parameters.addParam(RichFloat("radius", defaultRadiusOfSelection(md.mm()), "Radius",
+                "The new radius of every selected node, in the cloud's units (default: the mean radius of the "
+                "selected nodes). Larger makes the reconstructed surface thicker there."));
+            break;
     }
 }
 
@@ -232,6 +290,10 @@ bool FilterPCSkeletonPlugin::applyFilter(QAction* action, MeshDocument& md, cons
             case FP_COMPUTE_SKELETON: return computeSkeleton(md, parameters, cb);
             case FP_SKELETON_FROM_CONTRACTED: return skeletonFromContracted(md, parameters, cb);
             case FP_EXPORT_SKELETON: return exportSkeleton(md, parameters);
+            case FP_DELETE_SELECTED_NODES:
+            case FP_CONNECT_SELECTED_NODES:
+            case FP_MERGE_SELECTED_NODES:
+            case FP_SET_RADIUS_OF_SELECTED_NODES: return editSelectedNodes(ID(action), md, parameters);
         }
         errorMessage = "Unknown filter.";
     } catch (const pcskeleton::InvalidInput& e) {
@@ -367,6 +429,49 @@ bool FilterPCSkeletonPlugin::exportSkeleton(MeshDocument& md, const RichParamete
     Log("Skeleton '%s' written to '%s': %s.", qUtf8Printable(layer.label()),
         qUtf8Printable(QFileInfo(fileName).absoluteFilePath()),
         pcskeleton::describe(pcskeleton::analyseTopology(skeleton)).c_str());
+    return true;
+}
+
+bool FilterPCSkeletonPlugin::editSelectedNodes(int filter, MeshDocument& md, const RichParameterList& parameters) {
+    MeshModel& layer = *md.mm();
+    const QString reason = notASkeletonReason(layer);
+    if (!reason.isEmpty()) {
+        errorMessage = reason;
+        return false;
+    }
+    pcskeleton::SkeletonGraph skeleton = readSkeletonLayer(layer);
+    const int filledRadii = pcskeleton::fillMissingRadii(skeleton);
+    const std::vector<int> selected = selectedNodes(layer);
+    if (selected.empty()) {
+        errorMessage = QString("No node of '%1' is selected. Select nodes first (e.g. Filters > Selection > "
+                               "Conditional Vertex Selection), or use the Edit Skeleton tool.").arg(layer.label());
+        return false;
+    }
+    pcskeleton::SkeletonEditor editor(std::move(skeleton));
+    std::vector<int> selectedAfter = selected;
+    switch (filter) {
+        case FP_DELETE_SELECTED_NODES:
+            editor.deleteNodes(selected);
+            selectedAfter.clear();
+            break;
+        case FP_CONNECT_SELECTED_NODES:
+            if (selected.size() != 2) {
+                errorMessage = QString("To connect nodes, select exactly two nodes (%1 selected).").arg(selected.size());
+                return false;
+            }
+            editor.connect(selected[0], selected[1]);
+            break;
+        case FP_MERGE_SELECTED_NODES: selectedAfter = {editor.mergeNodes(selected)}; break;
+        case FP_SET_RADIUS_OF_SELECTED_NODES: editor.setRadius(selected, parameters.getFloat("radius")); break;
+    }
+    writeSkeletonLayer(layer, editor.skeleton());
+    selectNodes(layer, selectedAfter);
+    if (filledRadii > 0) {
+        Log(GLLogStream::WARNING, "%d node(s) of '%s' had no radius; they took their neighbours' radius.", filledRadii,
+            qUtf8Printable(layer.label()));
+    }
+    Log("Skeleton '%s': %s; now %s.", qUtf8Printable(layer.label()), editor.undoText().c_str(),
+        pcskeleton::describe(pcskeleton::analyseTopology(editor.graph())).c_str());
     return true;
 }
 

@@ -18,7 +18,17 @@ class FilterPCSkeletonPlugin : public QObject, public MeshFilterInterface {
     Q_INTERFACES(MeshFilterInterface)
 
 public:
-    enum { FP_CONTRACT_POINT_CLOUD, FP_COMPUTE_SKELETON, FP_SKELETON_FROM_CONTRACTED, FP_EXPORT_SKELETON };
+    enum {
+        FP_CONTRACT_POINT_CLOUD,
+        FP_COMPUTE_SKELETON,
+        FP_SKELETON_FROM_CONTRACTED,
+        FP_EXPORT_SKELETON,
+        // Skeleton repairs on the selected nodes, in place (MeshLab's convention for edits).
+        FP_DELETE_SELECTED_NODES,
+        FP_CONNECT_SELECTED_NODES,
+        FP_MERGE_SELECTED_NODES,
+        FP_SET_RADIUS_OF_SELECTED_NODES,
+    };
 
     FilterPCSkeletonPlugin();
 
@@ -46,4 +56,5 @@ private:
     bool computeSkeleton(MeshDocument& md, const RichParameterList& parameters, vcg::CallBackPos* cb);
     bool skeletonFromContracted(MeshDocument& md, const RichParameterList& parameters, vcg::CallBackPos* cb);
     bool exportSkeleton(MeshDocument& md, const RichParameterList& parameters);
+    bool editSelectedNodes(int filter, MeshDocument& md, const RichParameterList& parameters);
 };

@@ -106,8 +106,21 @@ MeshModel* addPointLayer(MeshDocument& md, const MeshModel& source, const LayerP
 MeshModel* addSkeletonLayer(MeshDocument& md, const MeshModel& source, const LayerPoints& input,
                             const SkeletonGraph& skeleton, const QString& label) {
     MeshModel* layer = md.addNewMesh("", label, true);
-    CMeshO& out = layer->cm;
-    layer->updateDataMask(MeshModel::MM_VERTQUALITY);
+    SkeletonGraph bySlot = skeleton;
+    bySlot.pointNode.assign(source.cm.vert.size(), -1);
+    for (std::size_t i = 0; i < input.vertexIndex.size(); ++i) bySlot.pointNode[input.vertexIndex[i]] = skeleton.pointNode[i];
+    writeSkeletonLayer(*layer, bySlot);
+    Allocator::GetPerMeshAttribute<int>(layer->cm, kSourceLayerAttribute)() = source.id();
+    return layer;
+}
+
+void writeSkeletonLayer(MeshModel& layer, const SkeletonGraph& skeleton) {
+    CMeshO& out = layer.cm;
+    // Stale per-vertex values must not survive into the new vertices.
+    auto oldRadius = Allocator::FindPerVertexAttribute<float>(out, kRadiusAttribute);
+    if (Allocator::IsValidHandle(out, oldRadius)) Allocator::DeletePerVertexAttribute(out, oldRadius);
+    out.Clear();
+    layer.updateDataMask(MeshModel::MM_VERTQUALITY);
     auto vertex = Allocator::AddVertices(out, skeleton.nodeCount());
     auto radius = Allocator::GetPerVertexAttribute<float>(out, kRadiusAttribute);
     for (std::size_t n = 0; n < skeleton.nodeCount(); ++n, ++vertex) {
@@ -115,13 +128,10 @@ MeshModel* addSkeletonLayer(MeshDocument& md, const MeshModel& source, const Lay
         vertex->Q() = radius[vertex] = float(skeleton.radii[n]);
     }
     for (const Edge& e : skeleton.edges) Allocator::AddEdge(out, e[0], e[1]);
-
-    std::vector<int> correspondence(source.cm.vert.size(), -1);
-    for (std::size_t i = 0; i < input.vertexIndex.size(); ++i) correspondence[input.vertexIndex[i]] = skeleton.pointNode[i];
-    Allocator::GetPerMeshAttribute<std::vector<int>>(out, kCorrespondenceAttribute)() = std::move(correspondence);
-    Allocator::GetPerMeshAttribute<int>(out, kSourceLayerAttribute)() = source.id();
-    layer->UpdateBoxAndNormals();
-    return layer;
+    if (!skeleton.pointNode.empty()) {
+        Allocator::GetPerMeshAttribute<std::vector<int>>(out, kCorrespondenceAttribute)() = skeleton.pointNode;
+    }
+    layer.UpdateBoxAndNormals();
 }
 
 MeshModel* addSegmentsLayer(MeshDocument& md, const MeshModel& source, const LayerPoints& input,
@@ -174,7 +184,39 @@ SkeletonGraph readSkeletonLayer(const MeshModel& layer) {
         if (a >= 0 && b >= 0) skeleton.edges.push_back({a, b});
     }
     normalizeEdges(skeleton.edges);
+    auto correspondence = Allocator::FindPerMeshAttribute<std::vector<int>>(m, kCorrespondenceAttribute);
+    if (Allocator::IsValidHandle(m, correspondence)) {
+        // Entries are vertex slots of this layer, stale if vertices were deleted since.
+        for (int vertexSlot : correspondence()) {
+            const bool live = vertexSlot >= 0 && vertexSlot < int(node.size());
+            skeleton.pointNode.push_back(live ? node[vertexSlot] : -1);
+        }
+    }
     return skeleton;
+}
+
+std::vector<int> selectedNodes(const MeshModel& layer) {
+    std::vector<int> selected;
+    int node = 0;
+    for (const CVertexO& v : layer.cm.vert) {
+        if (v.IsD()) continue;
+        if (v.IsS()) selected.push_back(node);
+        ++node;
+    }
+    return selected;
+}
+
+void selectNodes(MeshModel& layer, const std::vector<int>& nodes) {
+    std::vector<bool> wanted(layer.cm.vert.size(), false);
+    for (int n : nodes) {
+        if (n >= 0 && n < int(wanted.size())) wanted[n] = true;
+    }
+    int node = 0;
+    for (CVertexO& v : layer.cm.vert) {
+        if (v.IsD()) continue;
+        if (wanted[node++]) v.SetS();
+        else v.ClearS();
+    }
 }
 
 }  // namespace pcskeleton::meshlab

@@ -51,7 +51,18 @@ MeshModel* addSegmentsLayer(MeshDocument& md, const MeshModel& source, const Lay
 
 // Empty when `layer` can be read as a skeleton, else the reason, meant for the user.
 QString notASkeletonReason(const MeshModel& layer);
-// The layer's live vertices and edges as a graph (nodes renumbered densely).
+// The layer's live vertices and edges as a graph (nodes renumbered densely). pointNode is
+// the layer's pcs_correspondence (indexed by the source layer's vertex slots), empty when
+// the layer has none, e.g. a skeleton opened from a file.
 SkeletonGraph readSkeletonLayer(const MeshModel& layer);
+// Replaces the layer's vertices and edges by `skeleton`, in the conventions above; the
+// correspondence attribute is replaced when `skeleton.pointNode` is not empty. The layer
+// keeps its label, its source layer link and its place in the document.
+void writeSkeletonLayer(MeshModel& layer, const SkeletonGraph& skeleton);
+
+// The selected live vertices, numbered as readSkeletonLayer numbers the nodes.
+std::vector<int> selectedNodes(const MeshModel& layer);
+// Selects exactly these nodes (indices as above).
+void selectNodes(MeshModel& layer, const std::vector<int>& nodes);
 
 }  // namespace pcskeleton::meshlab
