@@ -280,22 +280,9 @@ void FilterPCSkeletonPlugin::initParameterSet(QAction* action, MeshDocument& md,
 
 bool FilterPCSkeletonPlugin::applyFilter(QAction* action, MeshDocument& md, const RichParameterList& parameters,
                                          vcg::CallBackPos* cb) {
+    bool done = false;
     try {
-        if (md.mm() == nullptr) {
-            errorMessage = "No layer is selected.";
-            return false;
-        }
-        switch (ID(action)) {
-            case FP_CONTRACT_POINT_CLOUD: return contractPointCloud(md, parameters, cb);
-            case FP_COMPUTE_SKELETON: return computeSkeleton(md, parameters, cb);
-            case FP_SKELETON_FROM_CONTRACTED: return skeletonFromContracted(md, parameters, cb);
-            case FP_EXPORT_SKELETON: return exportSkeleton(md, parameters);
-            case FP_DELETE_SELECTED_NODES:
-            case FP_CONNECT_SELECTED_NODES:
-            case FP_MERGE_SELECTED_NODES:
-            case FP_SET_RADIUS_OF_SELECTED_NODES: return editSelectedNodes(ID(action), md, parameters);
-        }
-        errorMessage = "Unknown filter.";
+        done = runFilter(ID(action), md, parameters, cb);
     } catch (const pcskeleton::InvalidInput& e) {
         errorMessage = e.what();
     } catch (const std::bad_alloc&) {
@@ -303,6 +290,29 @@ bool FilterPCSkeletonPlugin::applyFilter(QAction* action, MeshDocument& md, cons
     } catch (const std::exception& e) {
         errorMessage = QString("Internal error: ") + e.what();
     }
+    // meshlabserver prints the log but not the error message: without this, a failing
+    // script would only say "Problem with filter".
+    if (!done) Log(GLLogStream::WARNING, "%s", qUtf8Printable(errorMessage));
+    return done;
+}
+
+bool FilterPCSkeletonPlugin::runFilter(int filter, MeshDocument& md, const RichParameterList& parameters,
+                                       vcg::CallBackPos* cb) {
+    if (md.mm() == nullptr) {
+        errorMessage = "No layer is selected.";
+        return false;
+    }
+    switch (filter) {
+        case FP_CONTRACT_POINT_CLOUD: return contractPointCloud(md, parameters, cb);
+        case FP_COMPUTE_SKELETON: return computeSkeleton(md, parameters, cb);
+        case FP_SKELETON_FROM_CONTRACTED: return skeletonFromContracted(md, parameters, cb);
+        case FP_EXPORT_SKELETON: return exportSkeleton(md, parameters);
+        case FP_DELETE_SELECTED_NODES:
+        case FP_CONNECT_SELECTED_NODES:
+        case FP_MERGE_SELECTED_NODES:
+        case FP_SET_RADIUS_OF_SELECTED_NODES: return editSelectedNodes(filter, md, parameters);
+    }
+    errorMessage = "Unknown filter.";
     return false;
 }
 

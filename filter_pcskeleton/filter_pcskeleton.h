@@ -44,6 +44,7 @@ public:
                      vcg::CallBackPos* cb) override;
 
 private:
+    bool runFilter(int filter, MeshDocument& md, const RichParameterList& parameters, vcg::CallBackPos* cb);
     // Iterates until the contraction stops or `limit` iterations, logging each one.
     int contract(pcskeleton::LaplacianContraction& contraction, int limit,
                  const std::function<void(int done)>& afterIteration);
