@@ -16,4 +16,4 @@ add_custom_target(meshlab_prefix ALL
   VERBATIM)
 
 # Everyday use: sudo cmake --install build  (into Debian's MeshLab plugin directory).
-install(TARGETS filter_pcskeleton LIBRARY DESTINATION "${MESHLAB_SYSTEM_DIR}/plugins")
+install(TARGETS filter_pcskeleton edit_skeleton LIBRARY DESTINATION "${MESHLAB_SYSTEM_DIR}/plugins")

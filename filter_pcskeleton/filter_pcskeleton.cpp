@@ -123,8 +123,8 @@ float defaultRadiusOfSelection(const MeshModel* layer) {
     return nodes.empty() ? 0.0f : float(sum / nodes.size());
 }
 
-// "<folder of the points' file>/<layer label>.ply": next to the data rather than in
-// whatever directory MeshLab was started from.
+// "<folder of the points' file>/<layer label>.ply" (or _1, _2... if taken): next to the
+// data rather than in whatever directory MeshLab was started from.
 QString defaultSkeletonFileName(MeshDocument& md) {
     MeshModel* layer = md.mm();
     QString name = layer ? QFileInfo(layer->label()).completeBaseName() : QString("skeleton");
@@ -141,7 +141,11 @@ QString defaultSkeletonFileName(MeshDocument& md) {
     for (const MeshModel* m : md.meshList) {
         if (folder.isEmpty() && !m->fullName().isEmpty()) folder = QFileInfo(m->fullName()).absolutePath();
     }
-    return QDir(folder.isEmpty() ? QDir::homePath() : folder).filePath(name + ".ply");
+    // Never propose an existing file, above all the one the skeleton was opened from.
+    const QDir directory(folder.isEmpty() ? QDir::homePath() : folder);
+    QString fileName = directory.filePath(name + ".ply");
+    for (int copy = 1; QFileInfo::exists(fileName); ++copy) fileName = directory.filePath(QString("%1_%2.ply").arg(name).arg(copy));
+    return fileName;
 }
 
 }  // namespace

@@ -15,7 +15,7 @@ SDK_DIR="$ROOT/deps/meshlab-src"
 
 PACKAGES=(
   build-essential cmake pkg-config ccache
-  qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev libglew-dev
+  qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev libglew-dev libglu1-mesa-dev
   libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   libsuitesparse-dev libopenblas0-pthread libgtest-dev
   meshlab dpkg-dev

@@ -5,6 +5,8 @@
 #include <pcskeleton/sampled_shapes.h>
 #include <pcskeleton/skeleton_io.h>
 
+#include <QFile>
+
 #include <cstdlib>
 #include <unistd.h>
 
@@ -184,4 +186,18 @@ TEST_F(SkeletonFilterTest, LayersThatAreNotWhatAFilterNeedsGiveClearErrors) {
     EXPECT_TRUE(plugin->errorMsg().contains(".ply, .obj or .cg")) << plugin->errorMsg().toStdString();
     // torus, contracted, sphere, and the skeleton run's segments and skeleton.
     EXPECT_EQ(document.meshList.size(), 5) << "failed filters add no layer";
+}
+
+// A skeleton opened from ring.ply and edited must not be proposed to overwrite ring.ply.
+TEST_F(SkeletonFilterTest, ExportNeverProposesAnExistingFile) {
+    const std::string dir = temporaryDirectory();
+    const QString opened = QString::fromStdString(dir + "/ring.ply");
+    QFile(opened).open(QIODevice::WriteOnly);
+    MeshModel* skeleton = document.addNewMesh(opened, "ring.ply", true);
+    vcg::tri::Allocator<CMeshO>::AddVertices(skeleton->cm, 2);
+    vcg::tri::Allocator<CMeshO>::AddEdge(skeleton->cm, 0, 1);
+    EXPECT_EQ(defaults(action(kExportFilter)).getSaveFileName("fileName"), QString::fromStdString(dir + "/ring_1.ply"));
+    QFile(QString::fromStdString(dir + "/ring_1.ply")).open(QIODevice::WriteOnly);
+    EXPECT_EQ(defaults(action(kExportFilter)).getSaveFileName("fileName"), QString::fromStdString(dir + "/ring_2.ply"));
+    std::system(("rm -rf '" + dir + "'").c_str());
 }

@@ -1,0 +1,581 @@
+#include "edit_skeleton.h"
+
+#include "skeleton_panel.h"
+
+#include <filter_pcskeleton/skeleton_layer.h>
+
+#include <GL/glew.h>
+#include <GL/glu.h>
+
+#include <meshlab/glarea.h>
+#include <wrap/gl/math.h>
+#include <wrap/qt/trackball.h>
+
+#include <QDockWidget>
+#include <QMainWindow>
+#include <QMessageBox>
+#include <QPainter>
+#include <QSet>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace pcskeleton::edit {
+
+namespace {
+
+constexpr double kPickPixels = 10.0;   // how far from a node's centre a click still picks it
+constexpr int kDragStartPixels = 3;    // a press moving less than this is a click
+constexpr double kRadiusStep = 1.1;    // one radius key press or wheel notch
+
+// Nodes are yellow and selected ones red: distinct on MeshLab's grey cloud, and what the
+// GUI test looks for in screenshots.
+const float kNodeColour[3] = {1.0f, 0.85f, 0.0f};
+const float kSelectedColour[3] = {1.0f, 0.1f, 0.1f};
+const float kBoneColour[3] = {0.15f, 0.35f, 1.0f};
+const float kRadiusFieldColour[4] = {0.3f, 0.7f, 1.0f, 0.25f};
+
+// Draws with a GLU quadric, created once per frame.
+class Quadric {
+public:
+    Quadric() : q_(gluNewQuadric()) {}
+    ~Quadric() { gluDeleteQuadric(q_); }
+    void sphere(const Point& centre, double radius) const {
+        glPushMatrix();
+        glTranslated(centre.x(), centre.y(), centre.z());
+        gluSphere(q_, radius, 16, 12);
+        glPopMatrix();
+    }
+    // A truncated cone from `a` (radius ra) to `b` (radius rb).
+    void cone(const Point& a, double ra, const Point& b, double rb) const {
+        const Point axis = b - a;
+        const double length = axis.norm();
+        if (length <= 0.0) return;
+        const Point direction = axis / length;
+        const Point turnAxis = Point::UnitZ().cross(direction);
+        const double degrees = std::acos(std::clamp(direction.z(), -1.0, 1.0)) * 180.0 / M_PI;
+        glPushMatrix();
+        glTranslated(a.x(), a.y(), a.z());
+        if (turnAxis.norm() > 1e-9) glRotated(degrees, turnAxis.x(), turnAxis.y(), turnAxis.z());
+        else if (direction.z() < 0) glRotated(180.0, 1, 0, 0);
+        gluCylinder(q_, ra, rb, length, 16, 1);
+        glPopMatrix();
+    }
+
+private:
+    GLUquadric* q_;
+};
+
+QIcon skeletonIcon() {
+    QPixmap pixmap(32, 32);
+    pixmap.fill(Qt::transparent);
+    QPainter p(&pixmap);
+    p.setRenderHint(QPainter::Antialiasing);
+    p.setPen(QPen(QColor(40, 90, 255), 3));
+    const QPointF hip(16, 18), head(16, 4), leftFoot(7, 29), rightFoot(25, 29), hand(28, 10);
+    p.drawLine(hip, head);
+    p.drawLine(hip, leftFoot);
+    p.drawLine(hip, rightFoot);
+    p.drawLine(QPointF(16, 10), hand);
+    p.setPen(Qt::NoPen);
+    p.setBrush(QColor(255, 210, 0));
+    for (const QPointF& node : {hip, head, leftFoot, rightFoot, hand}) p.drawEllipse(node, 3.5, 3.5);
+    return QIcon(pixmap);
+}
+
+}  // namespace
+
+// --- ShortcutLease ---------------------------------------------------------------------
+
+void ShortcutLease::take(QWidget* window, const QList<QKeySequence>& keys) {
+    if (!window) return;
+    // Filter actions belong to their plugins, not to the window: they are found through the
+    // menus and toolbars that show them.
+    QSet<QAction*> actions;
+    for (QAction* action : window->findChildren<QAction*>()) actions.insert(action);
+    for (QWidget* widget : window->findChildren<QWidget*>()) {
+        for (QAction* action : widget->actions()) actions.insert(action);
+    }
+    for (QAction* action : actions) {
+        if (!action->shortcut().isEmpty() && keys.contains(action->shortcut())) {
+            taken_.append({action, action->shortcut()});
+            action->setShortcut(QKeySequence());
+        }
+    }
+}
+
+void ShortcutLease::giveBack() {
+    for (const auto& [action, key] : taken_) action->setShortcut(key);
+    taken_.clear();
+}
+
+// --- EditSkeletonTool ------------------------------------------------------------------
+
+const QString EditSkeletonTool::Info() {
+    return "Edit a curve skeleton by hand: select, move, delete, connect, merge, split nodes and change their "
+           "radius, with undo.";
+}
+
+bool EditSkeletonTool::StartEdit(MeshModel& m, GLArea* area, MLSceneGLSharedDataContext* context) {
+    const QString reason = meshlab::notASkeletonReason(m);
+    if (!reason.isEmpty()) {
+        // MeshLab drops log lines written here; a message is the only way to say why.
+        QMessageBox::information(area, "Edit Skeleton", reason);
+        return false;
+    }
+    SkeletonGraph skeleton = meshlab::readSkeletonLayer(m);
+    const int filledRadii = fillMissingRadii(skeleton);
+    try {
+        editor_ = std::make_unique<SkeletonEditor>(std::move(skeleton));
+    } catch (const InvalidInput& e) {
+        QMessageBox::information(area, "Edit Skeleton", e.what());
+        return false;
+    }
+    layer_ = &m;
+    area_ = area;
+    context_ = context;
+    selected_.assign(editor_->graph().nodeCount(), false);
+    for (int n : meshlab::selectedNodes(m)) selected_[n] = true;
+    sceneDiagonal_ = area->md() ? area->md()->bbox().Diag() : m.cm.bbox.Diag();
+    if (!(sceneDiagonal_ > 0)) sceneDiagonal_ = 1.0;
+
+    auto* window = qobject_cast<QMainWindow*>(area->window());
+    panel_ = new SkeletonPanel(window);
+    if (window) {
+        window->addDockWidget(Qt::RightDockWidgetArea, panel_);
+        // Sharing the right column with the layer dialog squeezes both: a tab beside it
+        // gives the panel the full height.
+        for (QDockWidget* dock : window->findChildren<QDockWidget*>()) {
+            if (dock != panel_ && dock->isVisible() && window->dockWidgetArea(dock) == Qt::RightDockWidgetArea) {
+                window->tabifyDockWidget(dock, panel_);
+                break;
+            }
+        }
+    }
+    panel_->setVisible(true);
+    panel_->raise();
+    connect(panel_, &SkeletonPanel::deleteRequested, this, &EditSkeletonTool::deleteSelection);
+    connect(panel_, &SkeletonPanel::connectRequested, this, &EditSkeletonTool::connectSelection);
+    connect(panel_, &SkeletonPanel::disconnectRequested, this, &EditSkeletonTool::disconnectSelection);
+    connect(panel_, &SkeletonPanel::mergeRequested, this, &EditSkeletonTool::mergeSelection);
+    connect(panel_, &SkeletonPanel::splitRequested, this, &EditSkeletonTool::splitSelection);
+    connect(panel_, &SkeletonPanel::radiusScaleRequested, this, &EditSkeletonTool::scaleSelectionRadius);
+    connect(panel_, &SkeletonPanel::undoRequested, this, &EditSkeletonTool::undo);
+    connect(panel_, &SkeletonPanel::redoRequested, this, &EditSkeletonTool::redo);
+    connect(panel_, &SkeletonPanel::radiusFieldToggled, this, &EditSkeletonTool::redraw);
+    // Del is "Delete Selected Faces and Vertices" and Ctrl+Y "fancy lighting" in MeshLab.
+    shortcuts_.take(area->window(), {QKeySequence(Qt::Key_Delete), QKeySequence("Ctrl+Z"), QKeySequence("Ctrl+Y"),
+                                     QKeySequence("Ctrl+Shift+Z")});
+    if (filledRadii > 0) {
+        panel_->showMessage(QString("%1 node(s) had no radius and took their neighbours' (saved with the first "
+                                    "edit).").arg(filledRadii), false);
+    }
+    refreshPanel();
+    area->setFocus();
+    return true;
+}
+
+void EditSkeletonTool::EndEdit(MeshModel&, GLArea*, MLSceneGLSharedDataContext*) {
+    shortcuts_.giveBack();
+    if (panel_) panel_->deleteLater();
+    panel_ = nullptr;
+    editor_.reset();
+    layer_ = nullptr;
+    gesture_ = Gesture::None;
+}
+
+std::vector<int> EditSkeletonTool::selection() const {
+    std::vector<int> nodes;
+    for (std::size_t n = 0; n < selected_.size(); ++n)
+        if (selected_[n]) nodes.push_back(static_cast<int>(n));
+    return nodes;
+}
+
+void EditSkeletonTool::select(const std::vector<int>& nodes, bool add) {
+    if (!add) selected_.assign(editor_->graph().nodeCount(), false);
+    for (int n : nodes) selected_[n] = add ? !selected_[n] : true;
+    meshlab::selectNodes(*layer_, selection());
+    if (area_) area_->updateSelection(layer_->id(), true, false);
+    refreshPanel();
+}
+
+void EditSkeletonTool::apply(const std::function<void()>& operation) {
+    if (!editor_) return;
+    try {
+        operation();
+        panel_->showMessage(QString("Done: %1.").arg(QString::fromStdString(editor_->undoText())), false);
+        storeInLayer();
+    } catch (const InvalidInput& e) {
+        panel_->showMessage(e.what(), true);
+    }
+}
+
+void EditSkeletonTool::deleteSelection() {
+    apply([this] {
+        editor_->deleteNodes(selection());
+        selected_.assign(editor_->graph().nodeCount(), false);
+    });
+}
+
+void EditSkeletonTool::connectSelection() {
+    apply([this] {
+        const std::vector<int> nodes = selection();
+        if (nodes.size() != 2) {
+            throw InvalidInput("To connect nodes, select exactly two (" + std::to_string(nodes.size()) + " selected).");
+        }
+        editor_->connect(nodes[0], nodes[1]);
+    });
+}
+
+void EditSkeletonTool::disconnectSelection() {
+    apply([this] {
+        const std::vector<int> nodes = selection();
+        if (nodes.size() != 2) {
+            throw InvalidInput("To remove a bone, select its two nodes (" + std::to_string(nodes.size()) +
+                               " selected).");
+        }
+        editor_->deleteEdge(nodes[0], nodes[1]);
+    });
+}
+
+void EditSkeletonTool::mergeSelection() {
+    apply([this] {
+        const int merged = editor_->mergeNodes(selection());
+        selected_.assign(editor_->graph().nodeCount(), false);
+        selected_[merged] = true;
+    });
+}
+
+void EditSkeletonTool::splitSelection() {
+    apply([this] {
+        const std::vector<int> nodes = selection();
+        if (nodes.size() != 2) {
+            throw InvalidInput("To split a bone, select its two nodes (" + std::to_string(nodes.size()) + " selected).");
+        }
+        const int inserted = editor_->splitEdge(nodes[0], nodes[1]);
+        selected_.assign(editor_->graph().nodeCount(), false);
+        selected_[inserted] = true;
+    });
+}
+
+void EditSkeletonTool::scaleSelectionRadius(double factor) {
+    apply([this, factor] { editor_->scaleRadius(selection(), factor); });
+}
+
+void EditSkeletonTool::undo() {
+    if (!editor_ || !editor_->canUndo()) {
+        if (panel_) panel_->showMessage("Nothing to undo.", false);
+        return;
+    }
+    const QString what = QString::fromStdString(editor_->undoText());
+    editor_->undo();
+    // Indices mean other nodes once nodes came or went: keep the selection only if not.
+    if (selected_.size() != editor_->graph().nodeCount()) selected_.assign(editor_->graph().nodeCount(), false);
+    panel_->showMessage(QString("Undone: %1.").arg(what), false);
+    storeInLayer();
+}
+
+void EditSkeletonTool::redo() {
+    if (!editor_ || !editor_->canRedo()) {
+        if (panel_) panel_->showMessage("Nothing to redo.", false);
+        return;
+    }
+    const QString what = QString::fromStdString(editor_->redoText());
+    editor_->redo();
+    if (selected_.size() != editor_->graph().nodeCount()) selected_.assign(editor_->graph().nodeCount(), false);
+    panel_->showMessage(QString("Redone: %1.").arg(what), false);
+    storeInLayer();
+}
+
+void EditSkeletonTool::storeInLayer() {
+    meshlab::writeSkeletonLayer(*layer_, editor_->skeleton());
+    meshlab::selectNodes(*layer_, selection());
+    layer_->setMeshModified(true);  // MeshLab offers to save it on closing
+    if (context_) {
+        MLRenderingData::RendAtts changed;
+        changed[MLRenderingData::ATT_NAMES::ATT_VERTPOSITION] = true;
+        changed[MLRenderingData::ATT_NAMES::ATT_VERTNORMAL] = true;
+        changed[MLRenderingData::ATT_NAMES::ATT_VERTCOLOR] = true;
+        context_->meshAttributesUpdated(layer_->id(), true, changed);
+        context_->manageBuffers(layer_->id());
+    }
+    if (area_) area_->updateSelection(layer_->id(), true, false);
+    refreshPanel();
+    redraw();
+}
+
+void EditSkeletonTool::refreshPanel() {
+    if (!panel_ || !editor_) return;
+    const SkeletonGraph& g = editor_->graph();
+    SkeletonPanel::State state;
+    state.counts = QString::fromStdString(describe(analyseTopology(g)));
+    const std::vector<int> nodes = selection();
+    state.selected = static_cast<int>(nodes.size());
+    state.selectedAreConnected =
+        nodes.size() == 2 && std::find(g.edges.begin(), g.edges.end(), Edge{nodes[0], nodes[1]}) != g.edges.end();
+    state.canUndo = editor_->canUndo();
+    state.canRedo = editor_->canRedo();
+    state.undoText = QString::fromStdString(editor_->undoText());
+    state.redoText = QString::fromStdString(editor_->redoText());
+    panel_->showState(state);
+}
+
+void EditSkeletonTool::redraw() {
+    if (area_) area_->updateAllSiblingsGLAreas();
+}
+
+Eigen::Vector2d EditSkeletonTool::screenPosition(const QMouseEvent* event) const {
+    const double ratio = area_->devicePixelRatio();
+    return {event->x() * ratio, (area_->height() - event->y()) * ratio};
+}
+
+double EditSkeletonTool::markerSize() const { return 0.006 * sceneDiagonal_; }
+
+// --- Mouse, keys, wheel ----------------------------------------------------------------
+
+void EditSkeletonTool::mousePressEvent(QMouseEvent* event, MeshModel&, GLArea* area) {
+    if (!editor_) return;
+    pressedAt_ = mouseAt_ = event->pos();
+    if (event->button() != Qt::LeftButton) {
+        // Right-drag rotates and middle-drag pans, as the left and middle buttons do
+        // when no tool is active.
+        gesture_ = Gesture::Rotating;
+        const Qt::MouseButton button = event->button() == Qt::RightButton ? Qt::LeftButton : event->button();
+        area->trackball.MouseDown(QT2VCG_X(area, event), QT2VCG_Y(area, event), QT2VCG(button, Qt::NoModifier));
+        return;
+    }
+    if (!view_.valid) return;
+    const bool add = event->modifiers() & Qt::ShiftModifier;
+    const int node = nodeAt(view_, editor_->graph().nodes, screenPosition(event), kPickPixels * area->devicePixelRatio());
+    if (node < 0) {
+        gesture_ = Gesture::RubberBand;
+    } else if (add) {
+        select({node}, true);
+        gesture_ = Gesture::None;
+    } else {
+        if (!selected_[node]) select({node}, false);
+        pressedNode_ = node;
+        gesture_ = Gesture::PressedOnNode;
+    }
+}
+
+void EditSkeletonTool::mouseMoveEvent(QMouseEvent* event, MeshModel&, GLArea* area) {
+    if (!editor_) return;
+    mouseAt_ = event->pos();
+    switch (gesture_) {
+        case Gesture::Rotating: area->trackball.MouseMove(QT2VCG_X(area, event), QT2VCG_Y(area, event)); break;
+        case Gesture::PressedOnNode:
+            if ((mouseAt_ - pressedAt_).manhattanLength() >= kDragStartPixels) gesture_ = Gesture::Moving;
+            break;
+        case Gesture::Moving: {
+            const std::vector<int> moved = selection();
+            Point centroid = Point::Zero();
+            for (int n : moved) centroid += editor_->graph().nodes[n];
+            centroid /= double(std::max<std::size_t>(moved.size(), 1));
+            const double ratio = area->devicePixelRatio();
+            const Eigen::Vector2d from(pressedAt_.x() * ratio, (area->height() - pressedAt_.y()) * ratio);
+            dragOffset_ = screenParallelOffset(view_, centroid, from, screenPosition(event));
+            break;
+        }
+        case Gesture::RubberBand:
+        case Gesture::None: break;
+    }
+}
+
+void EditSkeletonTool::mouseReleaseEvent(QMouseEvent* event, MeshModel&, GLArea* area) {
+    if (!editor_) return;
+    const Gesture finished = gesture_;
+    gesture_ = Gesture::None;
+    switch (finished) {
+        case Gesture::Rotating:
+            area->trackball.MouseUp(QT2VCG_X(area, event), QT2VCG_Y(area, event), QT2VCG(Qt::LeftButton, Qt::NoModifier));
+            break;
+        case Gesture::Moving: {
+            const Point offset = dragOffset_;
+            dragOffset_ = Point::Zero();
+            apply([this, offset] { editor_->moveNodes(selection(), offset); });
+            break;
+        }
+        case Gesture::RubberBand: {
+            const bool add = event->modifiers() & Qt::ShiftModifier;
+            if ((mouseAt_ - pressedAt_).manhattanLength() < kDragStartPixels) {
+                if (!add) select({}, false);  // a click on empty space clears the selection
+                break;
+            }
+            const double ratio = area->devicePixelRatio();
+            const Eigen::Vector2d a(pressedAt_.x() * ratio, (area->height() - pressedAt_.y()) * ratio);
+            const Eigen::Vector2d b(mouseAt_.x() * ratio, (area->height() - mouseAt_.y()) * ratio);
+            std::vector<int> inside = nodesInRectangle(view_, editor_->graph().nodes, a, b);
+            if (add) {  // add, not toggle
+                inside.erase(std::remove_if(inside.begin(), inside.end(), [this](int n) { return bool(selected_[n]); }),
+                             inside.end());
+            }
+            select(inside, add);
+            break;
+        }
+        case Gesture::PressedOnNode:
+        case Gesture::None: break;
+    }
+}
+
+void EditSkeletonTool::keyPressEvent(QKeyEvent* event, MeshModel&, GLArea*) {
+    if (!editor_) return;
+    const bool control = event->modifiers() & Qt::ControlModifier;
+    const bool shift = event->modifiers() & Qt::ShiftModifier;
+    event->accept();
+    switch (event->key()) {
+        case Qt::Key_Delete:
+        case Qt::Key_Backspace: deleteSelection(); break;
+        case Qt::Key_C: connectSelection(); break;
+        case Qt::Key_D: disconnectSelection(); break;
+        case Qt::Key_M: mergeSelection(); break;
+        case Qt::Key_S: splitSelection(); break;
+        case Qt::Key_Plus:
+        case Qt::Key_Equal:
+        case Qt::Key_PageUp: scaleSelectionRadius(kRadiusStep); break;
+        case Qt::Key_Minus:
+        case Qt::Key_PageDown: scaleSelectionRadius(1.0 / kRadiusStep); break;
+        case Qt::Key_R: panel_->toggleRadiusField(); break;
+        case Qt::Key_Z:
+            if (control && shift) redo();
+            else if (control) undo();
+            else event->ignore();
+            break;
+        case Qt::Key_Y:
+            if (control) redo();
+            else event->ignore();
+            break;
+        case Qt::Key_A:
+            if (control) {
+                std::vector<int> all(editor_->graph().nodeCount());
+                std::iota(all.begin(), all.end(), 0);
+                select(all, false);
+            } else {
+                event->ignore();
+            }
+            break;
+        default: event->ignore(); return;
+    }
+    redraw();
+}
+
+void EditSkeletonTool::wheelEvent(QWheelEvent* event, MeshModel&, GLArea* area) {
+    if (!editor_) return;
+    const float notches = event->angleDelta().y() / 120.0f;
+    if (event->modifiers() & Qt::ControlModifier) {
+        if (notches != 0.0f) scaleSelectionRadius(notches > 0 ? kRadiusStep : 1.0 / kRadiusStep);
+    } else {
+        area->trackball.MouseWheel(notches);
+    }
+}
+
+// --- Drawing ---------------------------------------------------------------------------
+
+void EditSkeletonTool::Decorate(MeshModel&, GLArea*, QPainter*) {
+    if (!editor_ || !layer_) return;
+    glPushMatrix();
+    glMultMatrix(layer_->cm.Tr);
+    double modelView[16], projection[16];
+    int viewport[4];
+    glGetDoublev(GL_MODELVIEW_MATRIX, modelView);
+    glGetDoublev(GL_PROJECTION_MATRIX, projection);
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    view_ = ScreenProjection::fromGl(modelView, projection, viewport);
+
+    PointList nodes = editor_->graph().nodes;
+    if (gesture_ == Gesture::Moving) {
+        for (int n : selection()) nodes[n] += dragOffset_;
+    }
+    glPushAttrib(GL_ALL_ATTRIB_BITS);
+    // The skeleton lies inside the cloud: it is drawn over it, or it could not be seen.
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    drawBones(nodes);
+    drawNodes(nodes);
+    if (panel_ && panel_->radiusFieldShown()) drawRadiusField(nodes);
+    glPopAttrib();
+    glPopMatrix();
+    if (gesture_ == Gesture::RubberBand) drawRubberBand();
+}
+
+void EditSkeletonTool::drawBones(const PointList& nodes) const {
+    glDisable(GL_LIGHTING);
+    glLineWidth(3.0f);
+    glBegin(GL_LINES);
+    for (const Edge& e : editor_->graph().edges) {
+        if (selected_[e[0]] && selected_[e[1]]) glColor3fv(kSelectedColour);
+        else glColor3fv(kBoneColour);
+        glVertex3dv(nodes[e[0]].data());
+        glVertex3dv(nodes[e[1]].data());
+    }
+    glEnd();
+}
+
+void EditSkeletonTool::drawNodes(const PointList& nodes) const {
+    glEnable(GL_LIGHTING);
+    glEnable(GL_COLOR_MATERIAL);
+    glColorMaterial(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
+    glEnable(GL_NORMALIZE);
+    const Quadric quadric;
+    for (std::size_t n = 0; n < nodes.size(); ++n) {
+        glColor3fv(selected_[n] ? kSelectedColour : kNodeColour);
+        quadric.sphere(nodes[n], markerSize() * (selected_[n] ? 1.3 : 1.0));
+    }
+}
+
+void EditSkeletonTool::drawRadiusField(const PointList& nodes) const {
+    const SkeletonGraph& g = editor_->graph();
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glDepthMask(GL_FALSE);
+    glEnable(GL_LIGHTING);
+    glEnable(GL_COLOR_MATERIAL);
+    glColor4fv(kRadiusFieldColour);
+    const Quadric quadric;
+    for (const Edge& e : g.edges) quadric.cone(nodes[e[0]], g.radii[e[0]], nodes[e[1]], g.radii[e[1]]);
+    for (std::size_t n = 0; n < nodes.size(); ++n) quadric.sphere(nodes[n], g.radii[n]);
+}
+
+void EditSkeletonTool::drawRubberBand() const {
+    const double ratio = area_->devicePixelRatio();
+    const auto glY = [&](int y) { return (area_->height() - y) * ratio; };
+    glPushAttrib(GL_ALL_ATTRIB_BITS);
+    glMatrixMode(GL_PROJECTION);
+    glPushMatrix();
+    glLoadIdentity();
+    glOrtho(0, area_->width() * ratio, 0, area_->height() * ratio, -1, 1);
+    glMatrixMode(GL_MODELVIEW);
+    glPushMatrix();
+    glLoadIdentity();
+    glDisable(GL_LIGHTING);
+    glDisable(GL_DEPTH_TEST);
+    glLineWidth(1.5f);
+    glColor3f(1.0f, 1.0f, 1.0f);
+    glBegin(GL_LINE_LOOP);
+    glVertex2d(pressedAt_.x() * ratio, glY(pressedAt_.y()));
+    glVertex2d(mouseAt_.x() * ratio, glY(pressedAt_.y()));
+    glVertex2d(mouseAt_.x() * ratio, glY(mouseAt_.y()));
+    glVertex2d(pressedAt_.x() * ratio, glY(mouseAt_.y()));
+    glEnd();
+    glPopMatrix();
+    glMatrixMode(GL_PROJECTION);
+    glPopMatrix();
+    glMatrixMode(GL_MODELVIEW);
+    glPopAttrib();
+}
+
+// --- Factory ---------------------------------------------------------------------------
+
+EditSkeletonFactory::EditSkeletonFactory() {
+    editSkeleton_ = new QAction(skeletonIcon(), "Edit Skeleton", this);
+    editSkeleton_->setCheckable(true);
+}
+
+MeshEditInterface* EditSkeletonFactory::getMeshEditInterface(QAction* action) {
+    return action == editSkeleton_ ? new EditSkeletonTool() : nullptr;
+}
+
+QString EditSkeletonFactory::getEditToolDescription(QAction*) { return EditSkeletonTool::Info(); }
+
+}  // namespace pcskeleton::edit

@@ -1,0 +1,108 @@
+// The skeleton editor on MeshLab's Edit toolbar: picks, drags and draws the nodes of the
+// current skeleton layer and applies every change through pcskeleton::SkeletonEditor, so
+// each one is checked and can be undone. The layer is rewritten after every change, so
+// saving or running a filter sees the edits, and ending the tool keeps them.
+#pragma once
+
+#include "screen_projection.h"
+
+#include <common/interfaces.h>
+
+#include <pcskeleton/skeleton_editing.h>
+
+#include <QPoint>
+
+#include <functional>
+#include <memory>
+
+class QAction;
+
+namespace pcskeleton::edit {
+
+class SkeletonPanel;
+
+// While the tool runs, keys it needs are taken from MeshLab's application-wide shortcuts
+// and given back when it ends.
+class ShortcutLease {
+public:
+    void take(QWidget* window, const QList<QKeySequence>& keys);
+    void giveBack();
+
+private:
+    QList<QPair<QAction*, QKeySequence>> taken_;
+};
+
+class EditSkeletonTool : public QObject, public MeshEditInterface {
+    Q_OBJECT
+public:
+    static const QString Info();
+
+    bool StartEdit(MeshModel& m, GLArea* area, MLSceneGLSharedDataContext* context) override;
+    void EndEdit(MeshModel& m, GLArea* area, MLSceneGLSharedDataContext* context) override;
+    void Decorate(MeshModel& m, GLArea* area, QPainter* painter) override;
+    void mousePressEvent(QMouseEvent* event, MeshModel& m, GLArea* area) override;
+    void mouseMoveEvent(QMouseEvent* event, MeshModel& m, GLArea* area) override;
+    void mouseReleaseEvent(QMouseEvent* event, MeshModel& m, GLArea* area) override;
+    void keyPressEvent(QKeyEvent* event, MeshModel& m, GLArea* area) override;
+    void wheelEvent(QWheelEvent* event, MeshModel& m, GLArea* area) override;
+
+private:
+    enum class Gesture { None, PressedOnNode, Moving, RubberBand, Rotating };
+
+    // Runs an operation of the editor; on refusal shows why and changes nothing.
+    void apply(const std::function<void()>& operation);
+    void deleteSelection();
+    void connectSelection();
+    void disconnectSelection();
+    void mergeSelection();
+    void splitSelection();
+    void scaleSelectionRadius(double factor);
+    void undo();
+    void redo();
+
+    // Writes the graph and the selection into the layer and refreshes views and panel.
+    void storeInLayer();
+    void refreshPanel();
+    void redraw();
+    std::vector<int> selection() const;
+    void select(const std::vector<int>& nodes, bool add);
+    Eigen::Vector2d screenPosition(const QMouseEvent* event) const;
+    double markerSize() const;
+
+    void drawBones(const PointList& nodes) const;
+    void drawNodes(const PointList& nodes) const;
+    void drawRadiusField(const PointList& nodes) const;
+    void drawRubberBand() const;
+
+    MeshModel* layer_ = nullptr;
+    GLArea* area_ = nullptr;
+    MLSceneGLSharedDataContext* context_ = nullptr;
+    std::unique_ptr<SkeletonEditor> editor_;
+    std::vector<bool> selected_;
+    SkeletonPanel* panel_ = nullptr;
+    ShortcutLease shortcuts_;
+    ScreenProjection view_;
+    double sceneDiagonal_ = 1.0;
+
+    Gesture gesture_ = Gesture::None;
+    QPoint pressedAt_, mouseAt_;
+    int pressedNode_ = -1;
+    Point dragOffset_ = Point::Zero();
+};
+
+class EditSkeletonFactory : public QObject, public MeshEditInterfaceFactory {
+    Q_OBJECT
+    MESHLAB_PLUGIN_IID_EXPORTER(MESH_EDIT_INTERFACE_FACTORY_IID)
+    Q_INTERFACES(MeshEditInterfaceFactory)
+
+public:
+    EditSkeletonFactory();
+    QList<QAction*> actions() const override { return {editSkeleton_}; }
+    MeshEditInterface* getMeshEditInterface(QAction* action) override;
+    QString getEditToolDescription(QAction* action) override;
+
+private:
+    QAction* editSkeleton_;
+};
+
+}  // namespace pcskeleton::edit
