@@ -34,6 +34,7 @@ constexpr double kRadiusStep = 1.1;    // one radius key press or wheel notch
 const float kNodeColour[3] = {1.0f, 0.85f, 0.0f};
 const float kSelectedColour[3] = {1.0f, 0.1f, 0.1f};
 const float kBoneColour[3] = {0.15f, 0.35f, 1.0f};
+const float kSelectedBoneColour[3] = {1.0f, 0.55f, 0.0f};  // both ends selected
 const float kRadiusFieldColour[4] = {0.3f, 0.7f, 1.0f, 0.25f};
 
 // Draws with a GLU quadric, created once per frame.
@@ -504,7 +505,7 @@ void EditSkeletonTool::drawBones(const PointList& nodes) const {
     glLineWidth(3.0f);
     glBegin(GL_LINES);
     for (const Edge& e : editor_->graph().edges) {
-        if (selected_[e[0]] && selected_[e[1]]) glColor3fv(kSelectedColour);
+        if (selected_[e[0]] && selected_[e[1]]) glColor3fv(kSelectedBoneColour);
         else glColor3fv(kBoneColour);
         glVertex3dv(nodes[e[0]].data());
         glVertex3dv(nodes[e[1]].data());

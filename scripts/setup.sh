@@ -19,7 +19,7 @@ PACKAGES=(
   libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   libsuitesparse-dev libopenblas0-pthread libgtest-dev
   meshlab dpkg-dev
-  xvfb xauth xdotool imagemagick python3 python3-matplotlib python3-numpy
+  xvfb xauth xdotool imagemagick python3 python3-matplotlib python3-pil python3-numpy
   libcgal-demo
 )
 
