@@ -264,28 +264,22 @@ void EditSkeletonTool::scaleSelectionRadius(double factor) {
     apply([this, factor] { editor_->scaleRadius(selection(), factor); });
 }
 
-void EditSkeletonTool::undo() {
-    if (!editor_ || !editor_->canUndo()) {
-        if (panel_) panel_->showMessage("Nothing to undo.", false);
+void EditSkeletonTool::undo() { stepHistory(false); }
+
+void EditSkeletonTool::redo() { stepHistory(true); }
+
+void EditSkeletonTool::stepHistory(bool forward) {
+    if (!editor_) return;
+    if (forward ? !editor_->canRedo() : !editor_->canUndo()) {
+        panel_->showMessage(forward ? "Nothing to redo." : "Nothing to undo.", false);
         return;
     }
-    const QString what = QString::fromStdString(editor_->undoText());
-    editor_->undo();
+    const QString what = QString::fromStdString(forward ? editor_->redoText() : editor_->undoText());
+    if (forward) editor_->redo();
+    else editor_->undo();
     // Indices mean other nodes once nodes came or went: keep the selection only if not.
     if (selected_.size() != editor_->graph().nodeCount()) selected_.assign(editor_->graph().nodeCount(), false);
-    panel_->showMessage(QString("Undone: %1.").arg(what), false);
-    storeInLayer();
-}
-
-void EditSkeletonTool::redo() {
-    if (!editor_ || !editor_->canRedo()) {
-        if (panel_) panel_->showMessage("Nothing to redo.", false);
-        return;
-    }
-    const QString what = QString::fromStdString(editor_->redoText());
-    editor_->redo();
-    if (selected_.size() != editor_->graph().nodeCount()) selected_.assign(editor_->graph().nodeCount(), false);
-    panel_->showMessage(QString("Redone: %1.").arg(what), false);
+    panel_->showMessage(QString(forward ? "Redone: %1." : "Undone: %1.").arg(what), false);
     storeInLayer();
 }
 

@@ -19,17 +19,7 @@ rm -rf "$WORK"; mkdir -p "$WORK"; cd "$WORK"
 export XDG_CONFIG_HOME="$WORK/config"  # no saved window layout from an earlier run
 PY=/usr/bin/python3
 NODES="$PY $HERE/find_nodes.py"
-step=0
-shot() { step=$((step + 1)); SHOT="$WORK/$(printf '%02d' $step)-$1.png"; import -window root "$SHOT"; }
-fail() { shot failure; echo "FAIL: $*"; echo "screenshots: $WORK"; exit 1; }
-wait_window() {  # name, seconds
-  local deadline=$((SECONDS + $2))
-  until xdotool search --onlyvisible --name "$1" >/dev/null 2>&1; do
-    [ $SECONDS -lt $deadline ] || fail "no window named '$1' after $2 s"
-    sleep 0.3
-  done
-}
-click() { xdotool mousemove "$1" "$2" click 1; sleep "${3:-0.8}"; }
+source "$HERE/gui_lib.sh"
 # Screen position of the ring node at `angle` degrees, from the last screenshot.
 node_at() { $NODES "$SHOT" position "$1"; }
 expect_nodes() {  # yellow, red
@@ -37,27 +27,7 @@ expect_nodes() {  # yellow, red
   [ "$counts" = "$1 $2" ] || fail "expected $1 unselected and $2 selected nodes on screen, saw $counts"
 }
 
-# A torus (major radius 1, minor 0.25) and its centre circle as 12 nodes, radius 0.25.
-$PY - <<'PY'
-import math
-import numpy as np
-rng = np.random.default_rng(1)
-u, v = rng.uniform(0, 2 * np.pi, (2, 6000))
-points = np.c_[(1 + 0.25 * np.cos(v)) * np.cos(u), (1 + 0.25 * np.cos(v)) * np.sin(u), 0.25 * np.sin(v)]
-with open("torus.ply", "w") as f:
-    f.write("ply\nformat ascii 1.0\nelement vertex 6000\nproperty float x\nproperty float y\n"
-            "property float z\nend_header\n")
-    np.savetxt(f, points, fmt="%.6f")
-with open("ring.ply", "w") as f:
-    f.write("ply\nformat ascii 1.0\nelement vertex 12\nproperty float x\nproperty float y\n"
-            "property float z\nproperty float quality\nelement edge 12\nproperty int vertex1\n"
-            "property int vertex2\nend_header\n")
-    for i in range(12):
-        a = math.radians(30 * i)
-        f.write(f"{math.cos(a):.6f} {math.sin(a):.6f} 0 0.25\n")
-    for i in range(12):
-        f.write(f"{i} {(i + 1) % 12}\n")
-PY
+$PY "$HERE/make_ring.py" 0.25 --torus  # a torus cloud and its centre circle, 12 nodes
 
 "$PREFIX/bin/meshlab" "$WORK/torus.ply" "$WORK/ring.ply" >"$WORK/meshlab.log" 2>&1 &
 MESHLAB_PID=$!

@@ -19,18 +19,7 @@ rm -rf "$WORK"; mkdir -p "$WORK"; cd "$WORK"
 export XDG_CONFIG_HOME="$WORK/config"
 tar -xzf /usr/share/doc/libcgal-dev/data.tar.gz data/meshes/elephant.off
 INPUT="$WORK/data/meshes/elephant.off"
-step=0
-
-shot() { step=$((step + 1)); import -window root "$WORK/$(printf '%02d' $step)-$1.png"; }
-fail() { shot failure; echo "FAIL: $*"; echo "screenshots: $WORK"; exit 1; }
-wait_window() {  # name, seconds
-  local deadline=$((SECONDS + $2))
-  until xdotool search --onlyvisible --name "$1" >/dev/null 2>&1; do
-    [ $SECONDS -lt $deadline ] || fail "no window named '$1' after $2 s"
-    sleep 0.3
-  done
-}
-click() { xdotool mousemove "$1" "$2" click 1; sleep "${3:-0.8}"; }
+source "$HERE/gui_lib.sh"
 
 "$PREFIX/bin/meshlab" "$INPUT" >"$WORK/meshlab.log" 2>&1 &
 MESHLAB_PID=$!

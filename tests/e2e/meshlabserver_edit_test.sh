@@ -8,19 +8,7 @@ HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 GRAPH="/usr/bin/python3 $HERE/skeleton_graph.py"
 rm -rf "$WORK"; mkdir -p "$WORK"; cd "$WORK"
 
-# A ring of 12 nodes of radius 1 in the xy plane (node i at 30 i degrees), radius 0.1.
-/usr/bin/python3 - <<'PY'
-import math
-with open("ring.ply", "w") as f:
-    f.write("ply\nformat ascii 1.0\nelement vertex 12\nproperty float x\nproperty float y\n"
-            "property float z\nproperty float quality\nelement edge 12\nproperty int vertex1\n"
-            "property int vertex2\nend_header\n")
-    for i in range(12):
-        a = math.radians(30 * i)
-        f.write(f"{math.cos(a):.6f} {math.sin(a):.6f} 0 0.1\n")
-    for i in range(12):
-        f.write(f"{i} {(i + 1) % 12}\n")
-PY
+/usr/bin/python3 "$HERE/make_ring.py" 0.1  # 12 nodes on the unit circle, radius 0.1
 $GRAPH check ring.ply --cycles 1 --tips 0
 
 xvfb-run -a "$MESHLABSERVER" -i ring.ply -s "$SCRIPTS/repair_skeleton_example.mlx" >run.log 2>&1 \

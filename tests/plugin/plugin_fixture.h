@@ -6,6 +6,7 @@
 #include <common/meshmodel.h>
 
 #include <pcskeleton/point_cloud_input.h>
+#include <pcskeleton/skeleton_graph.h>
 
 #include <vcg/complex/allocate.h>
 
@@ -68,3 +69,11 @@ inline std::vector<vcg::Point3f> positionsOf(const MeshModel& m) {
     return positions;
 }
 
+
+inline pcskeleton::SkeletonTopology topologyOfLayer(const MeshModel& m) {
+    std::vector<pcskeleton::Edge> edges;
+    for (const auto& e : m.cm.edge) {
+        edges.push_back({int(vcg::tri::Index(m.cm, e.cV(0))), int(vcg::tri::Index(m.cm, e.cV(1)))});
+    }
+    return pcskeleton::analyseTopology(m.cm.vert.size(), edges);
+}

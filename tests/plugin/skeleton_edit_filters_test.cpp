@@ -43,14 +43,6 @@ std::vector<int> selectedVertices(const MeshModel& m) {
     return selected;
 }
 
-pcskeleton::SkeletonTopology topologyOfLayer(const MeshModel& m) {
-    std::vector<pcskeleton::Edge> edges;
-    for (const auto& e : m.cm.edge) {
-        edges.push_back({int(vcg::tri::Index(m.cm, e.cV(0))), int(vcg::tri::Index(m.cm, e.cV(1)))});
-    }
-    return pcskeleton::analyseTopology(m.cm.vert.size(), edges);
-}
-
 }  // namespace
 
 TEST_F(SkeletonEditFilterTest, DeclaredAsInPlaceEditsWithHelpText) {

@@ -19,14 +19,6 @@ const char* const kExportFilter = "Export Skeleton (PLY with edges, OBJ, CG)";
 
 using SkeletonFilterTest = FilterPluginTest;
 
-pcskeleton::SkeletonTopology topologyOfLayer(const MeshModel& m) {
-    std::vector<pcskeleton::Edge> edges;
-    for (const auto& e : m.cm.edge) {
-        edges.push_back({int(vcg::tri::Index(m.cm, e.cV(0))), int(vcg::tri::Index(m.cm, e.cV(1)))});
-    }
-    return pcskeleton::analyseTopology(m.cm.vert.size(), edges);
-}
-
 std::string temporaryDirectory() {
     char pattern[] = "/tmp/pcskeleton_plugin_XXXXXX";
     return mkdtemp(pattern);

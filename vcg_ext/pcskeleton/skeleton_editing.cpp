@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numeric>
 
 namespace pcskeleton {
@@ -198,24 +199,25 @@ int SkeletonEditor::splitEdge(int a, int b, double at) {
 }
 
 void SkeletonEditor::setRadius(const std::vector<int>& nodes, double radius) {
-    const std::vector<int> changed = checkedNodes(nodes, 1, "set a radius");
     if (!(radius > 0.0) || !std::isfinite(radius)) {
         throw InvalidInput("A radius must be positive and finite (got " + std::to_string(radius) + ").");
     }
-    State next = current_;
-    next.what = "set the radius of " + countOf(changed.size(), "node");
-    for (int n : changed) next.graph.radii[n] = radius;
-    commit(std::move(next));
+    changeRadii(nodes, "set", [radius](double) { return radius; });
 }
 
 void SkeletonEditor::scaleRadius(const std::vector<int>& nodes, double factor) {
-    const std::vector<int> changed = checkedNodes(nodes, 1, "scale a radius");
     if (!(factor > 0.0) || !std::isfinite(factor)) {
         throw InvalidInput("A radius scale factor must be positive and finite (got " + std::to_string(factor) + ").");
     }
+    changeRadii(nodes, "scale", [factor](double radius) { return radius * factor; });
+}
+
+void SkeletonEditor::changeRadii(const std::vector<int>& nodes, const std::string& verb,
+                                 const std::function<double(double)>& newRadius) {
+    const std::vector<int> changed = checkedNodes(nodes, 1, (verb + " a radius").c_str());
     State next = current_;
-    next.what = "scale the radius of " + countOf(changed.size(), "node");
-    for (int n : changed) next.graph.radii[n] *= factor;
+    next.what = verb + " the radius of " + countOf(changed.size(), "node");
+    for (int n : changed) next.graph.radii[n] = newRadius(next.graph.radii[n]);
     commit(std::move(next));
 }
 

@@ -15,6 +15,7 @@
 #include "pcskeleton/skeleton_graph.h"
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -69,6 +70,8 @@ private:
     void commit(State next);
     // Drops `doomed` nodes (and their edges); the others are renumbered densely.
     static void removeNodes(State& state, const std::vector<bool>& doomed);
+    void changeRadii(const std::vector<int>& nodes, const std::string& verb,
+                     const std::function<double(double)>& newRadius);
     std::vector<int> checkedNodes(std::vector<int> nodes, std::size_t atLeast, const char* operation) const;
     void checkNode(int node) const;
 
