@@ -27,7 +27,6 @@ namespace {
 
 constexpr double kPickPixels = 10.0;   // how far from a node's centre a click still picks it
 constexpr int kDragStartPixels = 3;    // a press moving less than this is a click
-constexpr double kRadiusStep = 1.1;    // one radius key press or wheel notch
 
 // Nodes are yellow and selected ones red: distinct on MeshLab's grey cloud, and what the
 // GUI test looks for in screenshots.
@@ -221,22 +220,15 @@ void EditSkeletonTool::deleteSelection() {
 
 void EditSkeletonTool::connectSelection() {
     apply([this] {
-        const std::vector<int> nodes = selection();
-        if (nodes.size() != 2) {
-            throw InvalidInput("To connect nodes, select exactly two (" + std::to_string(nodes.size()) + " selected).");
-        }
-        editor_->connect(nodes[0], nodes[1]);
+        const auto [a, b] = exactlyTwoNodes(selection(), "connect nodes");
+        editor_->connect(a, b);
     });
 }
 
 void EditSkeletonTool::disconnectSelection() {
     apply([this] {
-        const std::vector<int> nodes = selection();
-        if (nodes.size() != 2) {
-            throw InvalidInput("To remove a bone, select its two nodes (" + std::to_string(nodes.size()) +
-                               " selected).");
-        }
-        editor_->deleteEdge(nodes[0], nodes[1]);
+        const auto [a, b] = exactlyTwoNodes(selection(), "remove a bone");
+        editor_->deleteEdge(a, b);
     });
 }
 
@@ -250,11 +242,8 @@ void EditSkeletonTool::mergeSelection() {
 
 void EditSkeletonTool::splitSelection() {
     apply([this] {
-        const std::vector<int> nodes = selection();
-        if (nodes.size() != 2) {
-            throw InvalidInput("To split a bone, select its two nodes (" + std::to_string(nodes.size()) + " selected).");
-        }
-        const int inserted = editor_->splitEdge(nodes[0], nodes[1]);
+        const auto [a, b] = exactlyTwoNodes(selection(), "split a bone");
+        const int inserted = editor_->splitEdge(a, b);
         selected_.assign(editor_->graph().nodeCount(), false);
         selected_[inserted] = true;
     });
@@ -308,7 +297,7 @@ void EditSkeletonTool::refreshPanel() {
     const std::vector<int> nodes = selection();
     state.selected = static_cast<int>(nodes.size());
     state.selectedAreConnected =
-        nodes.size() == 2 && std::find(g.edges.begin(), g.edges.end(), Edge{nodes[0], nodes[1]}) != g.edges.end();
+        nodes.size() == 2 && hasEdge(g.edges, nodes[0], nodes[1]);
     state.canUndo = editor_->canUndo();
     state.canRedo = editor_->canRedo();
     state.undoText = QString::fromStdString(editor_->undoText());
@@ -320,9 +309,9 @@ void EditSkeletonTool::redraw() {
     if (area_) area_->updateAllSiblingsGLAreas();
 }
 
-Eigen::Vector2d EditSkeletonTool::screenPosition(const QMouseEvent* event) const {
+Eigen::Vector2d EditSkeletonTool::toGlWindow(const QPoint& widgetPoint) const {
     const double ratio = area_->devicePixelRatio();
-    return {event->x() * ratio, (area_->height() - event->y()) * ratio};
+    return {widgetPoint.x() * ratio, (area_->height() - widgetPoint.y()) * ratio};
 }
 
 double EditSkeletonTool::markerSize() const { return 0.006 * sceneDiagonal_; }
@@ -342,7 +331,7 @@ void EditSkeletonTool::mousePressEvent(QMouseEvent* event, MeshModel&, GLArea* a
     }
     if (!view_.valid) return;
     const bool add = event->modifiers() & Qt::ShiftModifier;
-    const int node = nodeAt(view_, editor_->graph().nodes, screenPosition(event), kPickPixels * area->devicePixelRatio());
+    const int node = nodeAt(view_, editor_->graph().nodes, toGlWindow(event->pos()), kPickPixels * area->devicePixelRatio());
     if (node < 0) {
         gesture_ = Gesture::RubberBand;
     } else if (add) {
@@ -368,9 +357,7 @@ void EditSkeletonTool::mouseMoveEvent(QMouseEvent* event, MeshModel&, GLArea* ar
             Point centroid = Point::Zero();
             for (int n : moved) centroid += editor_->graph().nodes[n];
             centroid /= double(std::max<std::size_t>(moved.size(), 1));
-            const double ratio = area->devicePixelRatio();
-            const Eigen::Vector2d from(pressedAt_.x() * ratio, (area->height() - pressedAt_.y()) * ratio);
-            dragOffset_ = screenParallelOffset(view_, centroid, from, screenPosition(event));
+            dragOffset_ = screenParallelOffset(view_, centroid, toGlWindow(pressedAt_), toGlWindow(mouseAt_));
             break;
         }
         case Gesture::RubberBand:
@@ -398,10 +385,8 @@ void EditSkeletonTool::mouseReleaseEvent(QMouseEvent* event, MeshModel&, GLArea*
                 if (!add) select({}, false);  // a click on empty space clears the selection
                 break;
             }
-            const double ratio = area->devicePixelRatio();
-            const Eigen::Vector2d a(pressedAt_.x() * ratio, (area->height() - pressedAt_.y()) * ratio);
-            const Eigen::Vector2d b(mouseAt_.x() * ratio, (area->height() - mouseAt_.y()) * ratio);
-            std::vector<int> inside = nodesInRectangle(view_, editor_->graph().nodes, a, b);
+            std::vector<int> inside =
+                nodesInRectangle(view_, editor_->graph().nodes, toGlWindow(pressedAt_), toGlWindow(mouseAt_));
             if (add) {  // add, not toggle
                 inside.erase(std::remove_if(inside.begin(), inside.end(), [this](int n) { return bool(selected_[n]); }),
                              inside.end());
@@ -428,9 +413,9 @@ void EditSkeletonTool::keyPressEvent(QKeyEvent* event, MeshModel&, GLArea*) {
         case Qt::Key_S: splitSelection(); break;
         case Qt::Key_Plus:
         case Qt::Key_Equal:
-        case Qt::Key_PageUp: scaleSelectionRadius(kRadiusStep); break;
+        case Qt::Key_PageUp: scaleSelectionRadius(SkeletonPanel::kRadiusStep); break;
         case Qt::Key_Minus:
-        case Qt::Key_PageDown: scaleSelectionRadius(1.0 / kRadiusStep); break;
+        case Qt::Key_PageDown: scaleSelectionRadius(1.0 / SkeletonPanel::kRadiusStep); break;
         case Qt::Key_R: panel_->toggleRadiusField(); break;
         case Qt::Key_Z:
             if (control && shift) redo();
@@ -459,7 +444,7 @@ void EditSkeletonTool::wheelEvent(QWheelEvent* event, MeshModel&, GLArea* area) 
     if (!editor_) return;
     const float notches = event->angleDelta().y() / 120.0f;
     if (event->modifiers() & Qt::ControlModifier) {
-        if (notches != 0.0f) scaleSelectionRadius(notches > 0 ? kRadiusStep : 1.0 / kRadiusStep);
+        if (notches != 0.0f) scaleSelectionRadius(notches > 0 ? SkeletonPanel::kRadiusStep : 1.0 / SkeletonPanel::kRadiusStep);
     } else {
         area->trackball.MouseWheel(notches);
     }

@@ -67,7 +67,8 @@ private:
     void redraw();
     std::vector<int> selection() const;
     void select(const std::vector<int>& nodes, bool add);
-    Eigen::Vector2d screenPosition(const QMouseEvent* event) const;
+    // A widget position (Qt: logical pixels, y down) in OpenGL window pixels (y up).
+    Eigen::Vector2d toGlWindow(const QPoint& widgetPoint) const;
     double markerSize() const;
 
     void drawBones(const PointList& nodes) const;

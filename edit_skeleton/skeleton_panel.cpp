@@ -8,10 +8,6 @@
 
 namespace pcskeleton::edit {
 
-namespace {
-constexpr double kRadiusStep = 1.1;
-}
-
 SkeletonPanel::SkeletonPanel(QWidget* parent) : QDockWidget("Edit Skeleton", parent) {
     setObjectName("pcskeletonEditPanel");
     setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);

@@ -13,6 +13,8 @@ namespace pcskeleton::edit {
 class SkeletonPanel : public QDockWidget {
     Q_OBJECT
 public:
+    static constexpr double kRadiusStep = 1.1;  // one radius button, key press or wheel notch
+
     explicit SkeletonPanel(QWidget* parent);
 
     struct State {

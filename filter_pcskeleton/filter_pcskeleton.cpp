@@ -468,13 +468,11 @@ bool FilterPCSkeletonPlugin::editSelectedNodes(int filter, MeshDocument& md, con
             editor.deleteNodes(selected);
             selectedAfter.clear();
             break;
-        case FP_CONNECT_SELECTED_NODES:
-            if (selected.size() != 2) {
-                errorMessage = QString("To connect nodes, select exactly two nodes (%1 selected).").arg(selected.size());
-                return false;
-            }
-            editor.connect(selected[0], selected[1]);
+        case FP_CONNECT_SELECTED_NODES: {
+            const auto [a, b] = pcskeleton::exactlyTwoNodes(selected, "connect nodes");
+            editor.connect(a, b);
             break;
+        }
         case FP_MERGE_SELECTED_NODES: selectedAfter = {editor.mergeNodes(selected)}; break;
         case FP_SET_RADIUS_OF_SELECTED_NODES: editor.setRadius(selected, parameters.getFloat("radius")); break;
     }

@@ -1,7 +1,6 @@
 #include "pcskeleton/skeleton_editing.h"
 
 #include <algorithm>
-#include <cmath>
 #include <functional>
 #include <numeric>
 
@@ -13,12 +12,15 @@ std::string countOf(std::size_t n, const char* what) {
     return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
 }
 
-bool hasEdge(const std::vector<Edge>& edges, int a, int b) {
-    const Edge wanted{std::min(a, b), std::max(a, b)};
-    return std::find(edges.begin(), edges.end(), wanted) != edges.end();
-}
-
 }  // namespace
+
+std::array<int, 2> exactlyTwoNodes(const std::vector<int>& nodes, const std::string& purpose) {
+    if (nodes.size() != 2) {
+        throw InvalidInput("To " + purpose + ", select exactly two nodes (" + std::to_string(nodes.size()) +
+                           " selected).");
+    }
+    return {nodes[0], nodes[1]};
+}
 
 SkeletonEditor::SkeletonEditor(SkeletonGraph skeleton) {
     const std::string violation = invariantViolation(skeleton);
@@ -199,14 +201,14 @@ int SkeletonEditor::splitEdge(int a, int b, double at) {
 }
 
 void SkeletonEditor::setRadius(const std::vector<int>& nodes, double radius) {
-    if (!(radius > 0.0) || !std::isfinite(radius)) {
+    if (!isPositiveFinite(radius)) {
         throw InvalidInput("A radius must be positive and finite (got " + std::to_string(radius) + ").");
     }
     changeRadii(nodes, "set", [radius](double) { return radius; });
 }
 
 void SkeletonEditor::scaleRadius(const std::vector<int>& nodes, double factor) {
-    if (!(factor > 0.0) || !std::isfinite(factor)) {
+    if (!isPositiveFinite(factor)) {
         throw InvalidInput("A radius scale factor must be positive and finite (got " + std::to_string(factor) + ").");
     }
     changeRadii(nodes, "scale", [factor](double radius) { return radius * factor; });

@@ -14,12 +14,17 @@
 
 #include "pcskeleton/skeleton_graph.h"
 
+#include <array>
 #include <cstddef>
 #include <functional>
 #include <string>
 #include <vector>
 
 namespace pcskeleton {
+
+// The two nodes of a selection meant for a two-node operation (connect, disconnect, split);
+// throws InvalidInput naming `purpose` ("connect nodes") when there are not exactly two.
+std::array<int, 2> exactlyTwoNodes(const std::vector<int>& nodes, const std::string& purpose);
 
 class SkeletonEditor {
 public:

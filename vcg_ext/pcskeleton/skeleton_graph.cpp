@@ -3,7 +3,6 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
-#include <cmath>
 #include <numeric>
 #include <sstream>
 
@@ -74,6 +73,11 @@ void normalizeEdges(std::vector<Edge>& edges) {
     edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
 }
 
+bool hasEdge(const std::vector<Edge>& edges, int a, int b) {
+    const Edge wanted{std::min(a, b), std::max(a, b)};
+    return std::find(edges.begin(), edges.end(), wanted) != edges.end();
+}
+
 std::string invariantViolation(const SkeletonGraph& graph) {
     const int nodeCount = static_cast<int>(graph.nodeCount());
     std::ostringstream why;
@@ -86,7 +90,7 @@ std::string invariantViolation(const SkeletonGraph& graph) {
             why << "node " << n << " has a non-finite position";
             return why.str();
         }
-        if (!(graph.radii[n] > 0.0) || !std::isfinite(graph.radii[n])) {
+        if (!isPositiveFinite(graph.radii[n])) {
             why << "node " << n << " has radius " << graph.radii[n] << " (radii must be positive)";
             return why.str();
         }
@@ -131,7 +135,7 @@ int fillMissingRadii(SkeletonGraph& graph) {
     std::vector<int> frontier;
     int missing = 0;
     for (std::size_t n = 0; n < nodeCount; ++n) {
-        known[n] = graph.radii[n] > 0.0 && std::isfinite(graph.radii[n]);
+        known[n] = isPositiveFinite(graph.radii[n]);
         if (known[n]) frontier.push_back(static_cast<int>(n));
         else ++missing;
     }
@@ -139,11 +143,12 @@ int fillMissingRadii(SkeletonGraph& graph) {
 
     // Breadth-first from the nodes that have a radius, one ring of unknown nodes at a time,
     // so each takes the radii of the nearest known nodes only.
+    std::vector<bool> inRing(nodeCount, false);
     while (!frontier.empty()) {
         std::vector<int> ring;
         for (int n : frontier) {
             for (int m : neighbours[n]) {
-                if (!known[m] && std::find(ring.begin(), ring.end(), m) == ring.end()) ring.push_back(m);
+                if (!known[m] && !inRing[m]) ring.push_back(m), inRing[m] = true;
             }
         }
         std::vector<double> filled(ring.size(), 0.0);

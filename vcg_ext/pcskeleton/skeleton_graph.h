@@ -5,6 +5,7 @@
 #include "pcskeleton/point_cloud_input.h"
 
 #include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,12 @@ std::vector<int> nodeDegrees(std::size_t nodeCount, const std::vector<Edge>& edg
 
 // Sorts the edges, orders each edge's ends, drops duplicates and self-loops.
 void normalizeEdges(std::vector<Edge>& edges);
+
+// Whether a and b are joined by an edge, whichever end is named first.
+bool hasEdge(const std::vector<Edge>& edges, int a, int b);
+
+// A usable radius (or radius factor): positive and finite.
+inline bool isPositiveFinite(double value) { return value > 0.0 && value < std::numeric_limits<double>::infinity(); }
 
 // Empty when the graph is valid, else the first broken rule, meant for the user: one
 // radius per node, finite positions, edges between existing nodes, no self-loop, no
