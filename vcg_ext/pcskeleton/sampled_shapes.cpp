@@ -89,6 +89,30 @@ Polyline circle(const Point& centre, double radius, int sides) {
     return curve;
 }
 
+SkeletonGraph curveSkeleton(const Polyline& curve, double radius) {
+    SkeletonGraph skeleton;
+    auto nodeAt = [&](const Point& p) {
+        for (std::size_t n = 0; n < skeleton.nodes.size(); ++n)
+            if ((skeleton.nodes[n] - p).norm() < 1e-12) return int(n);
+        skeleton.nodes.push_back(p);
+        skeleton.radii.push_back(radius);
+        return int(skeleton.nodes.size() - 1);
+    };
+    for (const Segment& s : curve) skeleton.edges.push_back({nodeAt(s.a), nodeAt(s.b)});
+    normalizeEdges(skeleton.edges);
+    return skeleton;
+}
+
+PointList withoutSector(const PointList& points, const Point& centre, double fromAngle, double sweep) {
+    PointList kept;
+    for (const Point& p : points) {
+        double offset = std::atan2(p.y() - centre.y(), p.x() - centre.x()) - fromAngle;
+        offset -= 2 * kPi * std::floor(offset / (2 * kPi));
+        if (offset >= sweep) kept.push_back(p);
+    }
+    return kept;
+}
+
 PointList tube(const Polyline& centreCurve, double radius, std::size_t n, std::uint32_t seed) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> unit(0.0, 1.0);

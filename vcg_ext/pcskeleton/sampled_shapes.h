@@ -3,6 +3,7 @@
 #pragma once
 
 #include "pcskeleton/point_cloud_input.h"
+#include "pcskeleton/skeleton_graph.h"
 
 #include <cstdint>
 
@@ -35,6 +36,14 @@ PointList tube(const Polyline& centreCurve, double radius, std::size_t n, std::u
 // A closed regular polygon approximating the circle of radius R around `centre` in the
 // z = centre.z plane.
 Polyline circle(const Point& centre, double radius, int sides = 48);
+
+// The skeleton of tube(curve, radius): one node per distinct segment end, one bone per
+// segment, every radius `radius`. Segments sharing an end share its node.
+SkeletonGraph curveSkeleton(const Polyline& curve, double radius);
+
+// The points whose angle around the z axis through `centre` is outside
+// [fromAngle, fromAngle + sweep) (radians): a band of missing data across a ring.
+PointList withoutSector(const PointList& points, const Point& centre, double fromAngle, double sweep);
 
 // Distance from p to the nearest segment.
 double distanceToCurve(const Point& p, const Polyline& curve);
