@@ -1,5 +1,6 @@
 #include "filter_pcskeleton.h"
 
+#include "reconstruction_layer.h"
 #include "skeleton_layer.h"
 
 #include <pcskeleton/curve_skeleton.h>
@@ -153,7 +154,7 @@ QString defaultSkeletonFileName(MeshDocument& md) {
 FilterPCSkeletonPlugin::FilterPCSkeletonPlugin() {
     typeList << FP_CONTRACT_POINT_CLOUD << FP_COMPUTE_SKELETON << FP_SKELETON_FROM_CONTRACTED << FP_EXPORT_SKELETON
              << FP_DELETE_SELECTED_NODES << FP_CONNECT_SELECTED_NODES << FP_MERGE_SELECTED_NODES
-             << FP_SET_RADIUS_OF_SELECTED_NODES;
+             << FP_SET_RADIUS_OF_SELECTED_NODES << FP_RECONSTRUCT_FROM_SKELETON;
     for (FilterIDType type : typeList) actionList << new QAction(filterName(type), this);
 }
 
@@ -169,6 +170,7 @@ QString FilterPCSkeletonPlugin::filterName(FilterIDType filter) const {
         case FP_CONNECT_SELECTED_NODES: return "Skeleton: Connect the Two Selected Nodes";
         case FP_MERGE_SELECTED_NODES: return "Skeleton: Merge Selected Nodes";
         case FP_SET_RADIUS_OF_SELECTED_NODES: return "Skeleton: Set Radius of Selected Nodes";
+        case FP_RECONSTRUCT_FROM_SKELETON: return "Reconstruct Surface from Skeleton";
     }
     return {};
 }
@@ -220,11 +222,25 @@ QString FilterPCSkeletonPlugin::filterInfo(FilterIDType filter) const {
             return QString("Sets the radius of the selected nodes of the current skeleton layer (the thickness "
                            "reconstruction gives the shape there). The radius is also the vertex quality.") +
                    kEditHelp;
+        case FP_RECONSTRUCT_FROM_SKELETON:
+            return QString(
+                "Rebuilds a closed surface from a point cloud and its curve skeleton (Section V of the paper), for "
+                "scans with missing data: where the scan has points the surface passes through them, where it "
+                "has none the skeleton decides. A loop in the skeleton gives a handle in the surface, a loop cut in "
+                "the skeleton gives none, so fixing the skeleton (Edit Skeleton, or the Skeleton: filters) fixes "
+                "the surface's topology. Solves for a smooth scalar field on a grid: 0 at the points, minus the "
+                "node radius along the bones, positive beyond K radii from the skeleton; the surface is its zero "
+                "level set (marching cubes). Adds a mesh layer; the log gives the grid, the solver's effort and "
+                "the genus of the result. Neither input layer is changed.") +
+                kPaperReference;
     }
     return {};
 }
 
-MeshFilterInterface::FilterClass FilterPCSkeletonPlugin::getClass(QAction*) { return PointSet; }
+MeshFilterInterface::FilterClass FilterPCSkeletonPlugin::getClass(QAction* action) {
+    // Also listed with MeshLab's other surface reconstructions.
+    return ID(action) == FP_RECONSTRUCT_FROM_SKELETON ? FilterClass(PointSet | Remeshing) : PointSet;
+}
 
 int FilterPCSkeletonPlugin::getPreConditions(QAction*) const { return MeshModel::MM_VERTCOORD; }
 
@@ -241,7 +257,7 @@ int FilterPCSkeletonPlugin::postCondition(QAction* action) const {
 }
 
 MeshFilterInterface::FILTER_ARITY FilterPCSkeletonPlugin::filterArity(QAction* action) const {
-    return ID(action) == FP_SKELETON_FROM_CONTRACTED ? FIXED : SINGLE_MESH;
+    return ID(action) == FP_SKELETON_FROM_CONTRACTED || ID(action) == FP_RECONSTRUCT_FROM_SKELETON ? FIXED : SINGLE_MESH;
 }
 
 void FilterPCSkeletonPlugin::initParameterSet(QAction* action, MeshDocument& md, RichParameterList& parameters) {
@@ -279,6 +295,33 @@ void FilterPCSkeletonPlugin::initParameterSet(QAction* action, MeshDocument& md,
                 "The new radius of every selected node, in the cloud's units (default: the mean radius of the "
                 "selected nodes). Larger makes the reconstructed surface thicker there."));
             break;
+        case FP_RECONSTRUCT_FROM_SKELETON: {
+            const pcskeleton::ReconstructionParameters d;
+            parameters.addParam(RichMesh("pointsLayer", defaultPointsLayer(md), &md, "Points",
+                "The scan: the surface passes through its points. Faces, if any, are ignored."));
+            parameters.addParam(RichMesh("skeletonLayer", defaultSkeletonLayer(md), &md, "Skeleton",
+                "The curve skeleton of these points, edited or not: its bones and node radii say where the inside "
+                "is, and its loops become the surface's handles."));
+            parameters.addParam(RichInt("resolution", d.resolution, "Grid resolution",
+                QString("Grid cells along the longest side (%1 to %2). Finer shows more detail; memory and time "
+                        "grow with its cube (about 1 GB and 10 s at 256 for a ring-shaped object).")
+                    .arg(pcskeleton::kMinimumResolution).arg(pcskeleton::kMaximumResolution)));
+            parameters.addParam(RichFloat("smoothWeight", float(d.smoothWeight), "Smoothness weight (w1)",
+                "Weight of the field's smoothness (the integral of its squared Laplacian). Raise it for noisy "
+                "scans; lower it to follow the points more closely."));
+            parameters.addParam(RichFloat("surfaceWeight", float(d.surfaceWeight), "Surface weight (w2)",
+                "How strongly the surface passes through the points (field 0 there)."));
+            parameters.addParam(RichFloat("skeletonWeight", float(d.skeletonWeight), "Skeleton weight (w3)",
+                "How strongly the field equals minus the node radius along the bones. Raise it if the surface "
+                "does not bridge a gap the skeleton crosses; the radius sets how thick the bridge is."));
+            parameters.addParam(RichFloat("outsideWeight", float(d.outsideWeight), "Outside weight (w4)",
+                "How strongly the field is positive far from the skeleton (a weak hint, the paper's 0.005). Raise "
+                "it if the surface bulges into empty space or closes holes the skeleton leaves open."));
+            parameters.addParam(RichFloat("outsideRadii", float(d.outsideRadii), "Outside distance K (radii)",
+                "Space farther than K node radii from the skeleton counts as outside the shape (the paper's 4). "
+                "Lower it to keep gaps open next to thin parts."));
+            break;
+        }
     }
 }
 
@@ -315,6 +358,7 @@ bool FilterPCSkeletonPlugin::runFilter(int filter, MeshDocument& md, const RichP
         case FP_CONNECT_SELECTED_NODES:
         case FP_MERGE_SELECTED_NODES:
         case FP_SET_RADIUS_OF_SELECTED_NODES: return editSelectedNodes(filter, md, parameters);
+        case FP_RECONSTRUCT_FROM_SKELETON: return reconstructFromSkeleton(md, parameters, cb);
     }
     errorMessage = "Unknown filter.";
     return false;
@@ -488,3 +532,26 @@ bool FilterPCSkeletonPlugin::editSelectedNodes(int filter, MeshDocument& md, con
 }
 
 MESHLAB_PLUGIN_NAME_EXPORTER(FilterPCSkeletonPlugin)
+
+bool FilterPCSkeletonPlugin::reconstructFromSkeleton(MeshDocument& md, const RichParameterList& parameters,
+                                                     vcg::CallBackPos* cb) {
+    MeshModel* points = parameters.getMesh("pointsLayer");
+    MeshModel* skeleton = parameters.getMesh("skeletonLayer");
+    if (!points || !skeleton) {
+        errorMessage = "Choose a point layer and a skeleton layer.";
+        return false;
+    }
+    pcskeleton::ReconstructionParameters settings;
+    settings.resolution = parameters.getInt("resolution");
+    settings.smoothWeight = parameters.getFloat("smoothWeight");
+    settings.surfaceWeight = parameters.getFloat("surfaceWeight");
+    settings.skeletonWeight = parameters.getFloat("skeletonWeight");
+    settings.outsideWeight = parameters.getFloat("outsideWeight");
+    settings.outsideRadii = parameters.getFloat("outsideRadii");
+    const ReconstructedLayer result = addReconstructionLayer(md, *points, *skeleton, settings, progressOf(cb));
+    Log("Reconstruction '%s' from '%s' and '%s':", qUtf8Printable(result.layer->label()),
+        qUtf8Printable(points->label()), qUtf8Printable(skeleton->label()));
+    for (const QString& line : QString::fromStdString(pcskeleton::describe(result.report)).split('\n'))
+        Log("  %s", qUtf8Printable(line));
+    return true;
+}

@@ -28,6 +28,7 @@ public:
         FP_CONNECT_SELECTED_NODES,
         FP_MERGE_SELECTED_NODES,
         FP_SET_RADIUS_OF_SELECTED_NODES,
+        FP_RECONSTRUCT_FROM_SKELETON,
     };
 
     FilterPCSkeletonPlugin();
@@ -58,4 +59,5 @@ private:
     bool skeletonFromContracted(MeshDocument& md, const RichParameterList& parameters, vcg::CallBackPos* cb);
     bool exportSkeleton(MeshDocument& md, const RichParameterList& parameters);
     bool editSelectedNodes(int filter, MeshDocument& md, const RichParameterList& parameters);
+    bool reconstructFromSkeleton(MeshDocument& md, const RichParameterList& parameters, vcg::CallBackPos* cb);
 };
