@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 namespace pcskeleton {
@@ -274,12 +275,13 @@ Reconstruction reconstructFromSkeleton(const PointList& points, const SkeletonGr
 
 std::string describe(const ReconstructionReport& r) {
     std::ostringstream text;
+    text.precision(3);
     text << "grid " << r.gridNodes[0] << " x " << r.gridNodes[1] << " x " << r.gridNodes[2] << " nodes (" << r.unknowns
          << " unknowns, cell " << r.cellSize << "), " << r.levels << " multigrid levels\n"
          << "constraints: " << r.surfaceSamples << " surface samples, " << r.skeletonSamples << " skeleton samples, "
          << r.outsideNodes << " outside nodes\n"
-         << "solver: " << r.iterations << " iterations, relative residual " << r.relativeResidual
-         << (r.converged ? "" : " (not converged)") << "\n"
+         << "solver: " << r.iterations << " iterations, relative residual " << std::scientific << r.relativeResidual
+         << std::fixed << std::setprecision(2) << (r.converged ? "" : " (not converged)") << "\n"
          << "time: setup " << r.setupSeconds << " s, solve " << r.solveSeconds << " s, surface "
          << r.extractionSeconds << " s\n"
          << "result: " << describe(r.topology);
