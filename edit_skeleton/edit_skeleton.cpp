@@ -2,6 +2,7 @@
 
 #include "skeleton_panel.h"
 
+#include <filter_pcskeleton/reconstruction_layer.h>
 #include <filter_pcskeleton/skeleton_layer.h>
 
 #include <GL/glew.h>
@@ -11,10 +12,12 @@
 #include <wrap/gl/math.h>
 #include <wrap/qt/trackball.h>
 
+#include <QApplication>
 #include <QDockWidget>
 #include <QMainWindow>
 #include <QMessageBox>
 #include <QPainter>
+#include <QProgressDialog>
 #include <QSet>
 
 #include <algorithm>
@@ -163,6 +166,7 @@ bool EditSkeletonTool::StartEdit(MeshModel& m, GLArea* area, MLSceneGLSharedData
     connect(panel_, &SkeletonPanel::radiusScaleRequested, this, &EditSkeletonTool::scaleSelectionRadius);
     connect(panel_, &SkeletonPanel::undoRequested, this, &EditSkeletonTool::undo);
     connect(panel_, &SkeletonPanel::redoRequested, this, &EditSkeletonTool::redo);
+    connect(panel_, &SkeletonPanel::reconstructRequested, this, &EditSkeletonTool::reconstructSurface);
     connect(panel_, &SkeletonPanel::radiusFieldToggled, this, &EditSkeletonTool::redraw);
     // Del is "Delete Selected Faces and Vertices" and Ctrl+Y "fancy lighting" in MeshLab.
     shortcuts_.take(area->window(), {QKeySequence(Qt::Key_Delete), QKeySequence("Ctrl+Z"), QKeySequence("Ctrl+Y"),
@@ -270,6 +274,51 @@ void EditSkeletonTool::stepHistory(bool forward) {
     if (selected_.size() != editor_->graph().nodeCount()) selected_.assign(editor_->graph().nodeCount(), false);
     panel_->showMessage(QString(forward ? "Redone: %1." : "Undone: %1.").arg(what), false);
     storeInLayer();
+}
+
+void EditSkeletonTool::reconstructSurface() {
+    MeshDocument* document = area_ ? area_->md() : nullptr;
+    if (!document || !layer_) return;
+    MeshModel* points = meshlab::sourceLayerOf(*document, *layer_);
+    if (!points) points = meshlab::defaultPointsLayer(*document);
+    if (!points || points == layer_) {
+        panel_->showMessage("Open the point cloud this skeleton belongs to first: the surface passes through its "
+                            "points.", true);
+        return;
+    }
+    QProgressDialog progress("Reconstructing the surface...", QString(), 0, 100, area_->window());
+    progress.setWindowModality(Qt::WindowModal);
+    progress.setMinimumDuration(300);
+    const ProgressCallback report = [&progress](int percent, const char* what) {
+        progress.setLabelText(what);
+        progress.setValue(percent);
+        QCoreApplication::processEvents();
+    };
+    QApplication::setOverrideCursor(Qt::WaitCursor);
+    try {
+        // The tool keeps editing the skeleton: the new layer is not made current.
+        const meshlab::ReconstructedLayer result =
+            meshlab::addReconstructionLayer(*document, *points, *layer_, ReconstructionParameters{}, report, false);
+        QApplication::restoreOverrideCursor();
+        if (context_) {
+            MLRenderingData rendering;
+            MLPoliciesStandAloneFunctions::suggestedDefaultPerViewRenderingData(result.layer, rendering);
+            context_->setRenderingDataPerMeshView(result.layer->id(), area_->context(), rendering);
+            context_->manageBuffers(result.layer->id());
+        }
+        const ReconstructionReport& r = result.report;
+        panel_->showMessage(QString("Added '%1': %2 (%3 s).")
+                                .arg(result.layer->label(), QString::fromStdString(describe(r.topology)))
+                                .arg(r.setupSeconds + r.solveSeconds + r.extractionSeconds, 0, 'f', 1),
+                            !r.topology.closedManifold());
+        area_->update();
+    } catch (const InvalidInput& e) {
+        QApplication::restoreOverrideCursor();
+        panel_->showMessage(e.what(), true);
+    } catch (const std::bad_alloc&) {
+        QApplication::restoreOverrideCursor();
+        panel_->showMessage("Out of memory: use the filter with a lower grid resolution.", true);
+    }
 }
 
 void EditSkeletonTool::storeInLayer() {

@@ -59,6 +59,7 @@ private:
     void scaleSelectionRadius(double factor);
     void undo();
     void redo();
+    void reconstructSurface();
     void stepHistory(bool forward);
 
     // Writes the graph and the selection into the layer and refreshes views and panel.

@@ -34,6 +34,14 @@ SkeletonPanel::SkeletonPanel(QWidget* parent) : QDockWidget("Edit Skeleton", par
     for (int i = 0; i < ordered.size(); ++i) buttons->addWidget(ordered[i], i / 2, i % 2);
     layout->addLayout(buttons);
 
+    reconstruct_ = new QPushButton("Reconstruct from skeleton", this);
+    reconstruct_->setFocusPolicy(Qt::NoFocus);
+    reconstruct_->setToolTip(
+        "Rebuild a closed surface from the points this skeleton was computed from, guided by the skeleton as it "
+        "is now (paper Section V; grid of 128 cells, the paper's weights). Adds a mesh layer and leaves both "
+        "layers as they are. Other settings: Filters > Point Set > Reconstruct Surface from Skeleton.");
+    layout->addWidget(reconstruct_);
+
     radiusField_ = new QCheckBox("Show radius field (R)", body);
     radiusField_->setFocusPolicy(Qt::NoFocus);
     radiusField_->setToolTip("Draw each bone as a translucent cone and each node as a sphere of its radius.");
@@ -63,6 +71,7 @@ SkeletonPanel::SkeletonPanel(QWidget* parent) : QDockWidget("Edit Skeleton", par
     QObject::connect(radiusDown_, &QPushButton::clicked, this, [this] { emit radiusScaleRequested(1.0 / kRadiusStep); });
     QObject::connect(undo_, &QPushButton::clicked, this, &SkeletonPanel::undoRequested);
     QObject::connect(redo_, &QPushButton::clicked, this, &SkeletonPanel::redoRequested);
+    QObject::connect(reconstruct_, &QPushButton::clicked, this, &SkeletonPanel::reconstructRequested);
     QObject::connect(radiusField_, &QCheckBox::toggled, this, &SkeletonPanel::radiusFieldToggled);
 }
 

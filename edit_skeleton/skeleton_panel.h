@@ -38,6 +38,7 @@ signals:
     void radiusScaleRequested(double factor);
     void undoRequested();
     void redoRequested();
+    void reconstructRequested();
     void radiusFieldToggled();
 
 private:
@@ -46,7 +47,7 @@ private:
     QLabel* counts_;
     QLabel* selection_;
     QLabel* message_;
-    QPushButton *delete_, *connect_, *disconnect_, *merge_, *split_, *radiusUp_, *radiusDown_, *undo_, *redo_;
+    QPushButton *delete_, *connect_, *disconnect_, *merge_, *split_, *radiusUp_, *radiusDown_, *undo_, *redo_, *reconstruct_;
     QCheckBox* radiusField_;
 };
 

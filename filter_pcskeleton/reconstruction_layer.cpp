@@ -41,7 +41,7 @@ MeshModel* defaultPointsLayer(MeshDocument& md) {
 
 ReconstructedLayer addReconstructionLayer(MeshDocument& md, const MeshModel& points, const MeshModel& skeleton,
                                           const ReconstructionParameters& parameters,
-                                          const ProgressCallback& progress) {
+                                          const ProgressCallback& progress, bool makeCurrent) {
     if (&points == &skeleton)
         throw InvalidInput("Choose two different layers: the point cloud and the skeleton computed from it.");
     const QString skeletonProblem = notASkeletonReason(skeleton);
@@ -56,7 +56,7 @@ ReconstructedLayer addReconstructionLayer(MeshDocument& md, const MeshModel& poi
     const Reconstruction result =
         reconstructFromSkeleton(collectPoints(points.cm).points, readSkeletonLayer(skeleton), parameters, progress);
 
-    MeshModel* layer = md.addNewMesh("", derivedLabel(points, "reconstruction"), true);
+    MeshModel* layer = md.addNewMesh("", derivedLabel(points, "reconstruction"), makeCurrent);
     CMeshO& m = layer->cm;
     auto vertex = vcg::tri::Allocator<CMeshO>::AddVertices(m, result.mesh.vertices.size());
     for (const Point& p : result.mesh.vertices) (vertex++)->P() = CMeshO::CoordType(p.x(), p.y(), p.z());

@@ -23,11 +23,11 @@ struct ReconstructedLayer {
     ReconstructionReport report;
 };
 
-// Adds "<points> reconstruction", made current. Throws InvalidInput, naming the layer and
+// Adds "<points> reconstruction" (made current if asked). Throws InvalidInput, naming the layer and
 // what to do, when `points` is empty or a skeleton, `skeleton` is not a skeleton, or the
 // reconstruction refuses the data. Neither input layer is changed.
 ReconstructedLayer addReconstructionLayer(MeshDocument& md, const MeshModel& points, const MeshModel& skeleton,
                                           const ReconstructionParameters& parameters,
-                                          const ProgressCallback& progress = {});
+                                          const ProgressCallback& progress = {}, bool makeCurrent = true);
 
 }  // namespace pcskeleton::meshlab

@@ -75,6 +75,20 @@ shot undone
 xdotool key plus; sleep 0.8                                 # the -y node, still selected: radius x 1.1
 xdotool key r; sleep 0.8
 shot radius-field
+BEFORE="$SHOT"
+
+# Reconstruct from skeleton (the panel's button): a surface layer appears in the view.
+click 1074 326 10
+shot reconstructed
+$PY - "$BEFORE" "$SHOT" <<'PY' || fail "no reconstructed surface appeared in the view"
+import sys
+from PIL import Image, ImageChops
+before, after = (Image.open(p).convert("RGB").crop((0, 75, 860, 775)) for p in sys.argv[1:3])
+changed = sum(1 for value in ImageChops.difference(before, after).convert("L").getdata() if value > 40)
+share = changed / (860 * 700)
+print(f"view pixels changed by the reconstruction: {share:.1%}")
+assert share > 0.05
+PY
 
 # Save the layer: Filters > Point Set > Export Skeleton, with its default file name.
 click 120 10; click 160 386; click 640 536 1.5
