@@ -1,6 +1,10 @@
 // Benchmark of the skeleton-driven reconstruction (Section V): time, solver effort and
-// peak memory against the grid resolution, on a torus scan with 20% of its circumference
-// missing and its ring skeleton (the right answer is genus 1). One child process per case.
+// peak memory against the grid resolution, on two shapes of known genus:
+//   torus gap  a torus scan with 20% of its circumference missing and its ring skeleton
+//              (genus 1; a flat domain, about 1/3 of the cube's nodes);
+//   cube frame tubes along the 12 edges of a cube and that graph as skeleton (genus 5;
+//              a cubic domain, the worst case for a given resolution).
+// One child process per case.
 //
 // usage: bench_reconstruction [RESOLUTION ...]      default: 64 128 256
 #include "run_in_child.h"
@@ -25,14 +29,36 @@ struct Row {
     bool closed = false;
 };
 
-Row runCase(int resolution) {
-    const double pi = 3.14159265358979323846;
-    const PointList scan = shapes::withoutSector(shapes::torus(20000, 1.0, 0.3, 7), Point::Zero(), 0.0, 0.2 * 2 * pi);
-    const SkeletonGraph ring = shapes::curveSkeleton(shapes::circle(Point::Zero(), 1.0, 24), 0.3);
+struct Case {
+    const char* name;
+    int expectedGenus;
+    PointList scan;
+    SkeletonGraph skeleton;
+};
+
+Case makeCase(int shape) {
+    if (shape == 0) {
+        const double pi = 3.14159265358979323846;
+        return {"torus gap", 1,
+                shapes::withoutSector(shapes::torus(20000, 1.0, 0.3, 7), Point::Zero(), 0.0, 0.2 * 2 * pi),
+                shapes::curveSkeleton(shapes::circle(Point::Zero(), 1.0, 24), 0.3)};
+    }
+    shapes::Polyline edges;
+    for (int a = 0; a < 8; ++a)
+        for (int axis = 0; axis < 3; ++axis)
+            if (!(a & (1 << axis))) {
+                const Point from((a & 1), (a >> 1) & 1, (a >> 2) & 1);
+                edges.push_back({from, from + Point::Unit(axis)});
+            }
+    return {"cube frame", 5, shapes::tube(edges, 0.12, 20000, 7), shapes::curveSkeleton(edges, 0.12)};
+}
+
+Row runCase(int shape, int resolution) {
+    const Case c = makeCase(shape);
     ReconstructionParameters parameters;
     parameters.resolution = resolution;
     const auto start = std::chrono::steady_clock::now();
-    const Reconstruction result = reconstructFromSkeleton(scan, ring, parameters);
+    const Reconstruction result = reconstructFromSkeleton(c.scan, c.skeleton, parameters);
     const ReconstructionReport& r = result.report;
     Row row;
     row.total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -57,23 +83,24 @@ int main(int argc, char** argv) {
     for (int a = 1; a < argc; ++a) resolutions.push_back(std::atoi(argv[a]));
     if (resolutions.empty()) resolutions = {64, 128, 256};
 
-    std::printf("Reconstruction of a torus scan (20000 points, 20%% of the ring missing) from its ring skeleton\n"
-                "(genus 1 expected), %ld cores\n",
-                sysconf(_SC_NPROCESSORS_ONLN));
-    std::printf("%5s  %15s  %9s  %6s  %5s  %8s  %7s  %7s  %7s  %7s  %5s  %9s  %6s  %9s\n", "res", "grid nodes",
+    std::printf("Skeleton-driven reconstruction, 20000 points per shape, %ld cores\n", sysconf(_SC_NPROCESSORS_ONLN));
+    std::printf("%-10s  %8s  %5s  %15s  %9s  %6s  %5s  %8s  %7s  %7s  %7s  %7s  %5s  %9s  %6s  %9s\n", "shape", "expected", "res", "grid nodes",
                 "unknowns", "levels", "iters", "residual", "setup", "solve", "surface", "total", "genus", "triangles",
                 "closed", "peak RSS");
-    for (int resolution : resolutions) {
+    for (int shape = 0; shape < 2; ++shape) {
+        for (int resolution : resolutions) {
         Row row;
         double peakMegabytes = 0;
-        if (!runInChild([&] { return runCase(resolution); }, row, peakMegabytes)) {
-            std::printf("%5d  failed\n", resolution);
+        const Case c = makeCase(shape);
+        if (!runInChild([&] { return runCase(shape, resolution); }, row, peakMegabytes)) {
+            std::printf("%-10s  %5d  failed\n", c.name, resolution);
             continue;
         }
-        std::printf("%5d  %4d x%4d x%4d  %8.2fM  %6d  %5d  %8.1e  %6.2fs  %6.2fs  %6.2fs  %6.2fs  %5d  %9d  %6s  %6.0f MB\n",
-                    resolution, row.grid[0], row.grid[1], row.grid[2], row.unknowns / 1e6, row.levels, row.iterations,
+        std::printf("%-10s  %8d  %5d  %4d x%4d x%4d  %8.2fM  %6d  %5d  %8.1e  %6.2fs  %6.2fs  %6.2fs  %6.2fs  %5d  %9d  %6s  %6.0f MB\n",
+                    c.name, c.expectedGenus, resolution, row.grid[0], row.grid[1], row.grid[2], row.unknowns / 1e6, row.levels, row.iterations,
                     row.residual, row.setup, row.solve, row.extraction, row.total, row.genus, row.triangles,
                     row.closed ? "yes" : "NO", peakMegabytes);
+        }
     }
     return 0;
 }
