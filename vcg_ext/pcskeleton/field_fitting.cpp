@@ -128,6 +128,12 @@ struct Level {
     }
 };
 
+// The finest level's node weights (empty when the problem has none).
+Vector nodeWeightsOf(const FieldProblem& problem) {
+    if (problem.nodeWeight.empty()) return {};
+    return Eigen::Map<const Vector>(problem.nodeWeight.data(), Eigen::Index(problem.nodeWeight.size()));
+}
+
 Level makeLevel(const FieldProblem& problem, const FieldGrid& grid, Vector nodeWeight) {
     Level level;
     level.grid = grid;
@@ -206,11 +212,12 @@ double estimateLambdaMax(const Level& level) {
         state = state * 1664525u + 1013904223u;
         v[n] = double(state >> 8) / double(1u << 24) - 0.5;
     }
+    const Vector diagonal = level.inverseDiagonal.cwiseInverse();
     double lambda = 1;
     for (int iteration = 0; iteration < 12; ++iteration) {
         level.apply(v, av);
         const Vector w = level.inverseDiagonal.cwiseProduct(av);
-        lambda = v.dot(av) / v.dot(level.inverseDiagonal.cwiseInverse().cwiseProduct(v));
+        lambda = v.dot(av) / v.dot(diagonal.cwiseProduct(v));
         v = w / w.norm();
     }
     return 1.15 * lambda;
@@ -220,9 +227,7 @@ class MultigridPreconditioner {
 public:
     MultigridPreconditioner(const FieldProblem& problem, int& levelCount) {
         FieldGrid grid = problem.grid;
-        Vector nodeWeight = problem.nodeWeight.empty()
-                                ? Vector()
-                                : Eigen::Map<const Vector>(problem.nodeWeight.data(), problem.nodeWeight.size()).eval();
+        Vector nodeWeight = nodeWeightsOf(problem);
         levels_.push_back(makeLevel(problem, grid, nodeWeight));
         while (grid.canCoarsen() && grid.size() > kCoarsestNodes) {
             const FieldGrid coarse = grid.coarser();
@@ -375,19 +380,13 @@ Eigen::VectorXd fieldRightHandSide(const FieldProblem& problem) {
 
 Eigen::SparseMatrix<double> assembleFieldMatrix(const FieldProblem& problem) {
     checkProblem(problem);
-    const Vector weights = problem.nodeWeight.empty()
-                               ? Vector()
-                               : Eigen::Map<const Vector>(problem.nodeWeight.data(), problem.nodeWeight.size()).eval();
-    return MultigridPreconditioner::assemble(makeLevel(problem, problem.grid, weights));
+    return MultigridPreconditioner::assemble(makeLevel(problem, problem.grid, nodeWeightsOf(problem)));
 }
 
 Eigen::VectorXd applyFieldMatrix(const FieldProblem& problem, const Eigen::VectorXd& u) {
     checkProblem(problem);
-    const Vector weights = problem.nodeWeight.empty()
-                               ? Vector()
-                               : Eigen::Map<const Vector>(problem.nodeWeight.data(), problem.nodeWeight.size()).eval();
     Vector result;
-    makeLevel(problem, problem.grid, weights).apply(u, result);
+    makeLevel(problem, problem.grid, nodeWeightsOf(problem)).apply(u, result);
     return result;
 }
 

@@ -1,12 +1,9 @@
-// The regular grid of nodes on which Section V's scalar field lives, and trilinear
-// interpolation on it (how a point constraint sees the field).
+// The regular grid of nodes on which Section V's scalar field lives.
 #pragma once
 
 #include "pcskeleton/point_cloud_input.h"
 
-#include <algorithm>
 #include <array>
-#include <cmath>
 #include <cstddef>
 
 namespace pcskeleton {
@@ -33,31 +30,5 @@ struct FieldGrid {
         return result;
     }
 };
-
-// The eight nodes of the cell holding a point and their trilinear weights (summing to 1).
-// Points outside the grid are clamped to its boundary cells.
-struct TrilinearStencil {
-    std::array<std::size_t, 8> node{};
-    std::array<double, 8> weight{};
-};
-
-inline TrilinearStencil trilinearStencil(const FieldGrid& grid, const Point& p) {
-    std::array<int, 3> cell{};
-    std::array<double, 3> fraction{};
-    for (int axis = 0; axis < 3; ++axis) {
-        const double t = (p[axis] - grid.origin[axis]) / grid.spacing;
-        const int lastCell = grid.nodes[axis] - 2;
-        cell[axis] = std::min(std::max(int(std::floor(t)), 0), lastCell);
-        fraction[axis] = std::min(std::max(t - cell[axis], 0.0), 1.0);
-    }
-    TrilinearStencil stencil;
-    for (int corner = 0; corner < 8; ++corner) {
-        const int di = corner & 1, dj = (corner >> 1) & 1, dk = (corner >> 2) & 1;
-        stencil.node[corner] = grid.index(cell[0] + di, cell[1] + dj, cell[2] + dk);
-        stencil.weight[corner] = (di ? fraction[0] : 1 - fraction[0]) * (dj ? fraction[1] : 1 - fraction[1]) *
-                                 (dk ? fraction[2] : 1 - fraction[2]);
-    }
-    return stencil;
-}
 
 }  // namespace pcskeleton

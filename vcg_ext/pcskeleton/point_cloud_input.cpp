@@ -1,6 +1,7 @@
 #include "pcskeleton/point_cloud_input.h"
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <numeric>
@@ -92,14 +93,11 @@ NormalizedCloud normalizeCloud(const PointList& input, std::size_t minimumUnique
         throw InvalidInput(msg.str());
     }
 
-    Point lo = cloud.points.front(), hi = cloud.points.front();
-    for (const Point& p : cloud.points) {
-        lo = lo.cwiseMin(p);
-        hi = hi.cwiseMax(p);
-    }
-    cloud.center = 0.5 * (lo + hi);
-    cloud.scale = kNormalizedLongestSide / (hi - lo).maxCoeff();
-    cloud.diagonal = (hi - lo).norm() * cloud.scale;
+    Eigen::AlignedBox3d box;
+    for (const Point& p : cloud.points) box.extend(p);
+    cloud.center = box.center();
+    cloud.scale = kNormalizedLongestSide / box.sizes().maxCoeff();
+    cloud.diagonal = box.diagonal().norm() * cloud.scale;
     for (Point& p : cloud.points) p = (p - cloud.center) * cloud.scale;
 
     rejectCollinear(cloud.points);

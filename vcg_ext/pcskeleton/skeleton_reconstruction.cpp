@@ -3,6 +3,7 @@
 #include "pcskeleton/field_fitting.h"
 #include "pcskeleton/skeleton_distance.h"
 
+#include <Eigen/Geometry>
 #include <unistd.h>
 
 #include <chrono>
@@ -55,16 +56,14 @@ void checkInputs(const PointList& points, const SkeletonGraph& skeleton) {
 // The box holding the points and every node's ball, with a margin, as a grid whose cell
 // counts allow repeated halving (the multigrid levels).
 FieldGrid domainGrid(const PointList& points, const SkeletonGraph& skeleton, int resolution, Frame& frame) {
-    Point low = points[0], high = points[0];
-    for (const Point& p : points) {
-        low = low.cwiseMin(p);
-        high = high.cwiseMax(p);
-    }
+    Eigen::AlignedBox3d box;
+    for (const Point& p : points) box.extend(p);
     for (std::size_t n = 0; n < skeleton.nodeCount(); ++n) {
-        low = low.cwiseMin(skeleton.nodes[n] - Point::Constant(skeleton.radii[n]));
-        high = high.cwiseMax(skeleton.nodes[n] + Point::Constant(skeleton.radii[n]));
+        box.extend(skeleton.nodes[n] - Point::Constant(skeleton.radii[n]));
+        box.extend(skeleton.nodes[n] + Point::Constant(skeleton.radii[n]));
     }
-    const double longest = std::max((high - low).maxCoeff(), 1e-12);
+    const Point size = box.sizes();
+    const double longest = std::max(size.maxCoeff(), 1e-12);
     const int marginCells = std::max(2, int(std::ceil(kMarginShare * resolution)));
     const double spacing = longest / (resolution - 2 * marginCells);
     int halvings = 0;
@@ -73,12 +72,12 @@ FieldGrid domainGrid(const PointList& points, const SkeletonGraph& skeleton, int
     FieldGrid grid;
     Point extent;
     for (int axis = 0; axis < 3; ++axis) {
-        int cells = int(std::ceil((high[axis] - low[axis]) / spacing - 1e-9)) + 2 * marginCells;
+        int cells = int(std::ceil(size[axis] / spacing - 1e-9)) + 2 * marginCells;
         cells = (cells + multiple - 1) / multiple * multiple;
         grid.nodes[axis] = cells + 1;
         extent[axis] = cells * spacing;
     }
-    frame.origin = 0.5 * (low + high) - 0.5 * extent;
+    frame.origin = box.center() - 0.5 * extent;
     frame.scale = kPaperResolution / (resolution * spacing);
     grid.origin = Point::Zero();
     grid.spacing = double(kPaperResolution) / resolution;
@@ -121,7 +120,6 @@ double shareOfPointsFarFromSkeleton(const PointList& framePoints, const Skeleton
 }
 
 void addSkeletonSamples(const SkeletonGraph& skeleton, double weight, std::vector<PointConstraint>& constraints) {
-    const std::vector<int> degree = nodeDegrees(skeleton.nodeCount(), skeleton.edges);
     for (std::size_t n = 0; n < skeleton.nodeCount(); ++n)
         constraints.push_back({skeleton.nodes[n], -skeleton.radii[n], weight});
     for (const Edge& e : skeleton.edges) {
@@ -250,14 +248,11 @@ Reconstruction reconstructFromSkeleton(const PointList& points, const SkeletonGr
         for (int j = 0; j < grid.nodes[1]; ++j)
             for (int i = 0; i < grid.nodes[0]; ++i) {
                 const std::size_t n = grid.index(i, j, k);
-                if (grid.isBoundary(i, j, k)) {
-                    problem.nodeWeight[n] = boundaryWeight;
-                    problem.nodeValue[n] = std::max(skeletonField.cylindrical[n], grid.spacing);
-                } else if (skeletonField.beyondOutside[n] > 0) {
-                    problem.nodeWeight[n] = outsideNodeWeight;
-                    problem.nodeValue[n] = std::max(skeletonField.cylindrical[n], grid.spacing);
-                    ++summary.outsideNodes;
-                }
+                const bool boundary = grid.isBoundary(i, j, k);
+                if (!boundary && skeletonField.beyondOutside[n] <= 0) continue;
+                problem.nodeWeight[n] = boundary ? boundaryWeight : outsideNodeWeight;
+                problem.nodeValue[n] = std::max(skeletonField.cylindrical[n], grid.spacing);
+                summary.outsideNodes += !boundary;
             }
     summary.setupSeconds = secondsSince(start);
 
