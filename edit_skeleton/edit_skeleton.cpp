@@ -295,30 +295,33 @@ void EditSkeletonTool::reconstructSurface() {
         QCoreApplication::processEvents();
     };
     QApplication::setOverrideCursor(Qt::WaitCursor);
+    meshlab::ReconstructedLayer result;
+    QString failure;
     try {
         // The tool keeps editing the skeleton: the new layer is not made current.
-        const meshlab::ReconstructedLayer result =
-            meshlab::addReconstructionLayer(*document, *points, *layer_, ReconstructionParameters{}, report, false);
-        QApplication::restoreOverrideCursor();
-        if (context_) {
-            MLRenderingData rendering;
-            MLPoliciesStandAloneFunctions::suggestedDefaultPerViewRenderingData(result.layer, rendering);
-            context_->setRenderingDataPerMeshView(result.layer->id(), area_->context(), rendering);
-            context_->manageBuffers(result.layer->id());
-        }
-        const ReconstructionReport& r = result.report;
-        panel_->showMessage(QString("Added '%1': %2 (%3 s).")
-                                .arg(result.layer->label(), QString::fromStdString(describe(r.topology)))
-                                .arg(r.setupSeconds + r.solveSeconds + r.extractionSeconds, 0, 'f', 1),
-                            !r.topology.closedManifold());
-        area_->update();
+        result = meshlab::addReconstructionLayer(*document, *points, *layer_, ReconstructionParameters{}, report, false);
     } catch (const InvalidInput& e) {
-        QApplication::restoreOverrideCursor();
-        panel_->showMessage(e.what(), true);
+        failure = e.what();
     } catch (const std::bad_alloc&) {
-        QApplication::restoreOverrideCursor();
-        panel_->showMessage("Out of memory: use the filter with a lower grid resolution.", true);
+        failure = "Out of memory: use the filter with a lower grid resolution.";
     }
+    QApplication::restoreOverrideCursor();
+    if (!result.layer) {
+        panel_->showMessage(failure, true);
+        return;
+    }
+    if (context_) {
+        MLRenderingData rendering;
+        MLPoliciesStandAloneFunctions::suggestedDefaultPerViewRenderingData(result.layer, rendering);
+        context_->setRenderingDataPerMeshView(result.layer->id(), area_->context(), rendering);
+        context_->manageBuffers(result.layer->id());
+    }
+    const ReconstructionReport& r = result.report;
+    panel_->showMessage(QString("Added '%1': %2 (%3 s).")
+                            .arg(result.layer->label(), QString::fromStdString(describe(r.topology)))
+                            .arg(r.setupSeconds + r.solveSeconds + r.extractionSeconds, 0, 'f', 1),
+                        !r.topology.closedManifold());
+    area_->update();
 }
 
 void EditSkeletonTool::storeInLayer() {

@@ -132,10 +132,7 @@ QString defaultSkeletonFileName(MeshDocument& md) {
     name.replace(' ', '_');
     QString folder;
     if (layer) {
-        auto source = vcg::tri::Allocator<CMeshO>::FindPerMeshAttribute<int>(layer->cm, kSourceLayerAttribute);
-        MeshModel* sourceLayer =
-            vcg::tri::Allocator<CMeshO>::IsValidHandle(layer->cm, source) ? md.getMesh(source()) : nullptr;
-        for (MeshModel* m : {layer, sourceLayer}) {
+        for (MeshModel* m : {layer, sourceLayerOf(md, *layer)}) {
             if (folder.isEmpty() && m && !m->fullName().isEmpty()) folder = QFileInfo(m->fullName()).absolutePath();
         }
     }

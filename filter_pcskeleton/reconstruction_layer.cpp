@@ -11,12 +11,6 @@ namespace {
 bool isSkeleton(const MeshModel& layer) { return notASkeletonReason(layer).isEmpty(); }
 }  // namespace
 
-MeshModel* sourceLayerOf(MeshDocument& md, const MeshModel& skeletonLayer) {
-    CMeshO& m = const_cast<CMeshO&>(skeletonLayer.cm);  // vcglib's attribute lookup is not const
-    auto source = vcg::tri::Allocator<CMeshO>::FindPerMeshAttribute<int>(m, kSourceLayerAttribute);
-    return vcg::tri::Allocator<CMeshO>::IsValidHandle(m, source) ? md.getMesh(source()) : nullptr;
-}
-
 MeshModel* defaultSkeletonLayer(MeshDocument& md) {
     MeshModel* current = md.mm();
     if (current && isSkeleton(*current)) return current;

@@ -10,8 +10,6 @@
 
 namespace pcskeleton::meshlab {
 
-// The layer whose points a skeleton layer was computed from, when it is still open.
-MeshModel* sourceLayerOf(MeshDocument& md, const MeshModel& skeletonLayer);
 // Sensible dialog defaults from the current layer: the skeleton (the current layer if it
 // is one, else a skeleton computed from it, else any skeleton) and its points (the
 // skeleton's source, else the current layer if it is not a skeleton, else any other).

@@ -150,6 +150,12 @@ MeshModel* addSegmentsLayer(MeshDocument& md, const MeshModel& source, const Lay
     return layer;
 }
 
+MeshModel* sourceLayerOf(MeshDocument& md, const MeshModel& layer) {
+    CMeshO& m = const_cast<CMeshO&>(layer.cm);  // vcglib's attribute lookup is not const
+    auto source = Allocator::FindPerMeshAttribute<int>(m, kSourceLayerAttribute);
+    return Allocator::IsValidHandle(m, source) ? md.getMesh(source()) : nullptr;
+}
+
 QString notASkeletonReason(const MeshModel& layer) {
     CMeshO& m = const_cast<CMeshO&>(layer.cm);  // vcglib's attribute lookup is not const
     if (m.vn == 0) return QString("Layer '%1' is empty: it is not a skeleton.").arg(layer.label());

@@ -49,6 +49,10 @@ MeshModel* addSkeletonLayer(MeshDocument& md, const MeshModel& source, const Lay
 MeshModel* addSegmentsLayer(MeshDocument& md, const MeshModel& source, const LayerPoints& input,
                             const SkeletonGraph& skeleton, const QString& label);
 
+// The layer a skeleton (or contracted) layer was computed from, if it is still open
+// (pcs_source_layer); nullptr otherwise.
+MeshModel* sourceLayerOf(MeshDocument& md, const MeshModel& layer);
+
 // Empty when `layer` can be read as a skeleton, else the reason, meant for the user.
 QString notASkeletonReason(const MeshModel& layer);
 // The layer's live vertices and edges as a graph (nodes renumbered densely). pointNode is
