@@ -17,7 +17,7 @@ using namespace pcskeleton;
 namespace {
 
 struct Options {
-    std::string input, output, contracted, correspondence;
+    std::string input, output, contracted, correspondence, report;
     SkeletonParameters parameters;
     bool quiet = false;
 };
@@ -43,6 +43,11 @@ void printHelp() {
         "-o FILE    the skeleton: .ply (vertices with radius, element edge), .obj (v and\n"
         "           l lines) or .cg (Starlab curve-skeleton format; no radius)\n"
         "\n"
+        "After the run a quality report goes to stderr: cycles, tips, junctions, parts,\n"
+        "whether contraction converged, and warnings (points that did not contract, parts\n"
+        "that gave no bone, nodes outside the shape, short spurs, loops without a hole),\n"
+        "each naming the option that usually fixes it.\n"
+        "\n"
         "Options (default in brackets):\n"
         "  --contracted FILE     also write the contracted points (.ply or .xyz)\n"
         "  --correspondence FILE also write, for each input point, its node's index\n"
@@ -65,6 +70,13 @@ void printHelp() {
         "  --radius R            thinning ball radius as a fraction of the bounding-box\n"
         "                        diagonal [%g]. Larger merges close parts and small loops;\n"
         "                        smaller keeps more detail and more noise.\n"
+        "  --no-extend-tips      keep the tips where contraction left them (the paper's\n"
+        "                        skeleton); by default each limb is extended to the end of\n"
+        "                        its tip's points, since contraction shortens limbs\n"
+        "  --refine              remove short spurs and loops smaller than their tube, merge\n"
+        "                        junctions closer than the node spacing [off: it changes the\n"
+        "                        paper's result]. Use it when the report warns of them.\n"
+        "  --report FILE         also write the quality report to FILE\n"
         "  --quiet               no progress and no summary on stderr\n"
         "  -h, --help            this text\n"
         "\n"
@@ -97,6 +109,7 @@ bool parseArguments(int argc, char** argv, Options& options) {
         {"--output", [&](const std::string& v) { options.output = v; }},
         {"--contracted", [&](const std::string& v) { options.contracted = v; }},
         {"--correspondence", [&](const std::string& v) { options.correspondence = v; }},
+        {"--report", [&](const std::string& v) { options.report = v; }},
         {"--k", [&](const std::string& v) { c.neighbourCount = parseInteger("--k", v); }},
         {"--wl", [&](const std::string& v) { c.initialContractionWeight = parseNumber("--wl", v); }},
         {"--wh", [&](const std::string& v) { c.initialAttractionWeight = parseNumber("--wh", v); }},
@@ -113,6 +126,10 @@ bool parseArguments(int argc, char** argv, Options& options) {
         if (arg == "-h" || arg == "--help") return false;
         if (arg == "--quiet") {
             options.quiet = true;
+        } else if (arg == "--no-extend-tips") {
+            options.parameters.thinning.extendTips = false;
+        } else if (arg == "--refine") {
+            options.parameters.thinning.refine = true;
         } else if (auto option = withValue.find(arg); option != withValue.end()) {
             if (i + 1 >= argc) throw UsageError(arg + " needs a value");
             option->second(argv[++i]);
@@ -130,11 +147,17 @@ bool parseArguments(int argc, char** argv, Options& options) {
     return true;
 }
 
-void writeCorrespondence(const SkeletonGraph& skeleton, const std::string& path) {
+void writeText(const std::string& path, const std::function<void(std::ostream&)>& write) {
     std::ofstream out(path);
-    for (int node : skeleton.pointNode) out << node << '\n';
+    write(out);
     out.close();
     if (!out) throw InvalidInput("Cannot write '" + path + "'.");
+}
+
+void writeCorrespondence(const SkeletonGraph& skeleton, const std::string& path) {
+    writeText(path, [&](std::ostream& out) {
+        for (int node : skeleton.pointNode) out << node << '\n';
+    });
 }
 
 }  // namespace
@@ -162,14 +185,17 @@ int main(int argc, char** argv) {
         writeSkeleton(result.skeleton, options.output);
         if (!options.contracted.empty()) writePointCloud(result.contraction.contracted, options.contracted);
         if (!options.correspondence.empty()) writeCorrespondence(result.skeleton, options.correspondence);
+        const std::string report = describe(result.quality);
+        if (!options.report.empty()) writeText(options.report, [&](std::ostream& out) { out << report << '\n'; });
         if (!options.quiet) {
             const StageSeconds& s = result.seconds;
             std::fprintf(stderr,
                          "pcskeleton: %s: %zu points -> %s; contraction: %zu iterations, %s; "
-                         "time: 1-rings %.2f s, contraction %.2f s, thinning %.2f s, embedding %.2f s\n",
+                         "time: 1-rings %.2f s, contraction %.2f s, thinning %.2f s, embedding %.2f s, "
+                         "finishing %.2f s\n%s\n",
                          options.input.c_str(), points.size(), describe(analyseTopology(result.skeleton)).c_str(),
                          result.contraction.iterations.size(), describe(result.contraction.stopReason).c_str(),
-                         s.neighbourhoods, s.contraction, s.thinning, s.embedding);
+                         s.neighbourhoods, s.contraction, s.thinning, s.embedding, s.finishing, report.c_str());
         }
         return 0;
     } catch (const InvalidInput& e) {

@@ -82,6 +82,15 @@ void addThinningParameters(RichParameterList& list) {
         "Radius of the balls that sample the contracted points into skeleton nodes, as a fraction of the "
         "bounding-box diagonal (the paper's 0.02). Larger: fewer nodes, and parts or holes closer than this "
         "merge; smaller: more nodes, and noise may survive as short spurs or tiny loops."));
+    list.addParam(RichBool("extendTips", d.extendTips, "Extend tips to the shape's ends",
+        "Contraction pulls the ends of limbs inwards, so the skeleton stops short of them. This extends every "
+        "limb (not the short spurs) along its direction to the farthest of its tip's points, with a new end node. "
+        "Turn it off to get the paper's skeleton exactly."));
+    list.addParam(RichBool("refine", d.refine, "Refine: remove spurs and spurious loops",
+        "Cleans what noise leaves: limbs shorter than the body is thick where they join are absorbed into the "
+        "junction, loops smaller than the tube around them collapse to a node, junctions closer than the node "
+        "spacing merge. Off by default because it changes the paper's result; the log's quality report says "
+        "when it would help."));
     list.addParam(RichBool("addSegmentsLayer", true, "Add a layer of points coloured by node",
         "Adds a copy of the input points, each coloured by the skeleton node it belongs to (the "
         "correspondence), with the node index in the per-vertex attribute pcs_node. The input layer is "
@@ -91,6 +100,8 @@ void addThinningParameters(RichParameterList& list) {
 pcskeleton::ThinningParameters readThinningParameters(const RichParameterList& list) {
     pcskeleton::ThinningParameters p;
     p.sampleRadius = list.getFloat("sampleRadius");
+    p.extendTips = list.getBool("extendTips");
+    p.refine = list.getBool("refine");
     return p;
 }
 
@@ -419,14 +430,15 @@ bool FilterPCSkeletonPlugin::contractPointCloud(MeshDocument& md, const RichPara
 }
 
 void FilterPCSkeletonPlugin::addSkeletonLayers(MeshDocument& md, const MeshModel& source, const LayerPoints& input,
-                                               const pcskeleton::SkeletonGraph& skeleton, bool addSegments,
-                                               const pcskeleton::StageSeconds& seconds) {
-    if (addSegments) addSegmentsLayer(md, source, input, skeleton, derivedLabel(source, "segments"));
+                                               const pcskeleton::SkeletonResult& result, bool addSegments) {
+    if (addSegments) addSegmentsLayer(md, source, input, result.skeleton, derivedLabel(source, "segments"));
     const QString label = derivedLabel(source, "skeleton");
-    addSkeletonLayer(md, source, input, skeleton, label);
-    Log("Skeleton '%s': %s.", qUtf8Printable(label), pcskeleton::describe(pcskeleton::analyseTopology(skeleton)).c_str());
-    Log("Time: 1-rings %.2f s, contraction %.2f s, thinning %.2f s, embedding %.2f s.", seconds.neighbourhoods,
-        seconds.contraction, seconds.thinning, seconds.embedding);
+    addSkeletonLayer(md, source, input, result.skeleton, label);
+    Log("Skeleton '%s', quality report:", qUtf8Printable(label));
+    logReport(pcskeleton::describe(result.quality));
+    const pcskeleton::StageSeconds& seconds = result.seconds;
+    Log("Time: 1-rings %.2f s, contraction %.2f s, thinning %.2f s, embedding %.2f s, finishing %.2f s.",
+        seconds.neighbourhoods, seconds.contraction, seconds.thinning, seconds.embedding, seconds.finishing);
 }
 
 bool FilterPCSkeletonPlugin::computeSkeleton(MeshDocument& md, const RichParameterList& parameters,
@@ -445,13 +457,12 @@ bool FilterPCSkeletonPlugin::computeSkeleton(MeshDocument& md, const RichParamet
     });
     Log("Contraction: %d iteration(s), %s.", done, pcskeleton::describe(contraction.stopReason()).c_str());
 
-    pcskeleton::StageSeconds seconds;
-    const pcskeleton::SkeletonGraph skeleton =
-        pcskeleton::skeletonFromContraction(contraction, thinning, &seconds, pcskeleton::progressRange(progress, 90, 100));
+    const pcskeleton::SkeletonResult result =
+        pcskeleton::skeletonFromContraction(contraction, thinning, pcskeleton::progressRange(progress, 90, 100));
     if (parameters.getBool("addContractedLayer")) {
-        addPointLayer(md, source, input, contraction.contractedPoints(), derivedLabel(source, "contracted"));
+        addPointLayer(md, source, input, result.contraction.contracted, derivedLabel(source, "contracted"));
     }
-    addSkeletonLayers(md, source, input, skeleton, parameters.getBool("addSegmentsLayer"), seconds);
+    addSkeletonLayers(md, source, input, result, parameters.getBool("addSegmentsLayer"));
     return true;
 }
 
@@ -460,10 +471,9 @@ bool FilterPCSkeletonPlugin::skeletonFromContracted(MeshDocument& md, const Rich
     MeshModel* source = parameters.getMesh("sourceLayer");
     LayerPoints input;
     const pcskeleton::PointList contracted = readContractedLayer(*md.mm(), source, input);
-    pcskeleton::StageSeconds seconds;
-    const pcskeleton::SkeletonGraph skeleton = pcskeleton::skeletonFromContractedPoints(
-        input.points, contracted, parameters.getInt("k"), readThinningParameters(parameters), &seconds, progressOf(cb));
-    addSkeletonLayers(md, *source, input, skeleton, parameters.getBool("addSegmentsLayer"), seconds);
+    const pcskeleton::SkeletonResult result = pcskeleton::skeletonFromContractedPoints(
+        input.points, contracted, parameters.getInt("k"), readThinningParameters(parameters), progressOf(cb));
+    addSkeletonLayers(md, *source, input, result, parameters.getBool("addSegmentsLayer"));
     return true;
 }
 
@@ -548,7 +558,12 @@ bool FilterPCSkeletonPlugin::reconstructFromSkeleton(MeshDocument& md, const Ric
     const ReconstructedLayer result = addReconstructionLayer(md, *points, *skeleton, settings, progressOf(cb));
     Log("Reconstruction '%s' from '%s' and '%s':", qUtf8Printable(result.layer->label()),
         qUtf8Printable(points->label()), qUtf8Printable(skeleton->label()));
-    for (const QString& line : QString::fromStdString(pcskeleton::describe(result.report)).split('\n'))
-        Log("  %s", qUtf8Printable(line));
+    logReport(pcskeleton::describe(result.report));
     return true;
+}
+
+void FilterPCSkeletonPlugin::logReport(const std::string& report) {
+    for (const QString& line : QString::fromStdString(report).split('\n')) {
+        Log(line.startsWith("warning:", Qt::CaseInsensitive) ? GLLogStream::WARNING : GLLogStream::FILTER, "  %s", qUtf8Printable(line));
+    }
 }

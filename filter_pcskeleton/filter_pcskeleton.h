@@ -52,8 +52,9 @@ private:
     void logContractionStart(const MeshModel& source, const pcskeleton::LaplacianContraction& contraction,
                              std::size_t points);
     void addSkeletonLayers(MeshDocument& md, const MeshModel& source, const pcskeleton::meshlab::LayerPoints& input,
-                           const pcskeleton::SkeletonGraph& skeleton, bool addSegments,
-                           const pcskeleton::StageSeconds& seconds);
+                           const pcskeleton::SkeletonResult& result, bool addSegments);
+    // Logs a multi-line report indented, its "Warning:" lines as warnings.
+    void logReport(const std::string& report);
     bool contractPointCloud(MeshDocument& md, const RichParameterList& parameters, vcg::CallBackPos* cb);
     bool computeSkeleton(MeshDocument& md, const RichParameterList& parameters, vcg::CallBackPos* cb);
     bool skeletonFromContracted(MeshDocument& md, const RichParameterList& parameters, vcg::CallBackPos* cb);

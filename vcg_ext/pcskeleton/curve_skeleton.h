@@ -1,5 +1,6 @@
 // The whole pipeline, point cloud to curve skeleton: contraction (steps 1-3), thinning
-// (step 4) and embedding (step 5).
+// (step 4) and embedding (step 5), then the optional refinement, tip extension and the
+// quality report.
 //
 // One call:     SkeletonResult r = computeCurveSkeleton(points);
 // Two stages:   contract with LaplacianContraction (watching every iteration), then
@@ -9,6 +10,7 @@
 
 #include "pcskeleton/laplacian_contraction.h"
 #include "pcskeleton/skeleton_graph.h"
+#include "pcskeleton/skeleton_quality.h"
 
 namespace pcskeleton {
 
@@ -17,6 +19,13 @@ struct ThinningParameters {
     // (the paper's 0.02). Larger: fewer nodes, small loops and close parts merge;
     // smaller: more nodes, noise may survive as spurs and tiny loops.
     double sampleRadius = 0.02;
+    // Extend each limb to the end of its tip's points (tip_extension.h): contraction
+    // leaves limbs short. On by default: the robustness suite (bench_robustness) measures
+    // the gap to the shapes' ends with and without.
+    bool extendTips = true;
+    // Remove spurs and loops without a hole, merge close junctions (skeleton_refinement.h).
+    // Off by default: it changes the paper's result.
+    bool refine = false;
 };
 
 struct SkeletonParameters {
@@ -26,11 +35,13 @@ struct SkeletonParameters {
 
 struct StageSeconds {
     double neighbourhoods = 0, contraction = 0, thinning = 0, embedding = 0;
+    double finishing = 0;  // refinement, tip extension and quality checks
 };
 
 struct SkeletonResult {
     SkeletonGraph skeleton;
-    ContractionResult contraction;
+    SkeletonQuality quality;
+    ContractionResult contraction;  // no iterations (stop reason NotStopped) when thinned from saved contracted points
     StageSeconds seconds;
 };
 
@@ -41,14 +52,14 @@ void checkThinningParameters(const ThinningParameters& parameters);
 SkeletonResult computeCurveSkeleton(const PointList& input, const SkeletonParameters& parameters = {},
                                     const ProgressCallback& progress = {});
 
-// Steps 4-5 on the current state of a contraction. Fills every stage of `seconds`.
-SkeletonGraph skeletonFromContraction(const LaplacianContraction& contraction, const ThinningParameters& parameters,
-                                      StageSeconds* seconds = nullptr, const ProgressCallback& progress = {});
+// Steps 4-5 and what follows them, on the current state of a contraction.
+SkeletonResult skeletonFromContraction(const LaplacianContraction& contraction, const ThinningParameters& parameters,
+                                       const ProgressCallback& progress = {});
 
-// Steps 4-5 for `contracted` (one point per input point, same order) made earlier from
+// The same for `contracted` (one point per input point, same order) made earlier from
 // `input`. The 1-rings are rebuilt on `input` with k neighbours (0 = the paper's rule).
-SkeletonGraph skeletonFromContractedPoints(const PointList& input, const PointList& contracted, int k,
-                                           const ThinningParameters& parameters, StageSeconds* seconds = nullptr,
-                                           const ProgressCallback& progress = {});
+SkeletonResult skeletonFromContractedPoints(const PointList& input, const PointList& contracted, int k,
+                                            const ThinningParameters& parameters,
+                                            const ProgressCallback& progress = {});
 
 }  // namespace pcskeleton

@@ -85,7 +85,7 @@ Polyline circle(const Point& centre, double radius, int sides) {
         const double angle = 2 * kPi * i / sides;
         return Point(centre.x() + radius * std::cos(angle), centre.y() + radius * std::sin(angle), centre.z());
     };
-    for (int i = 0; i < sides; ++i) curve.push_back({corner(i), corner(i + 1)});
+    for (int i = 0; i < sides; ++i) curve.push_back({corner(i), corner((i + 1) % sides)});  // exactly closed
     return curve;
 }
 

@@ -1,32 +1,15 @@
 #include "pcskeleton/skeleton_graph.h"
 
+#include "pcskeleton/disjoint_sets.h"
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
-#include <numeric>
 #include <sstream>
 
 namespace pcskeleton {
 
 namespace {
-
-class DisjointSets {
-public:
-    explicit DisjointSets(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
-    int find(int i) {
-        while (parent_[i] != i) i = parent_[i] = parent_[parent_[i]];
-        return i;
-    }
-    bool unite(int a, int b) {
-        a = find(a), b = find(b);
-        if (a == b) return false;
-        parent_[b] = a;
-        return true;
-    }
-
-private:
-    std::vector<int> parent_;
-};
 
 const char* plural(int n, const char* one, const char* many) { return n == 1 ? one : many; }
 
@@ -36,6 +19,15 @@ std::vector<int> nodeDegrees(std::size_t nodeCount, const std::vector<Edge>& edg
     std::vector<int> degree(nodeCount, 0);
     for (const Edge& e : edges) ++degree[e[0]], ++degree[e[1]];
     return degree;
+}
+
+std::vector<std::vector<int>> adjacencyLists(std::size_t nodeCount, const std::vector<Edge>& edges) {
+    std::vector<std::vector<int>> neighbours(nodeCount);
+    for (const Edge& e : edges) {
+        neighbours[e[0]].push_back(e[1]);
+        neighbours[e[1]].push_back(e[0]);
+    }
+    return neighbours;
 }
 
 SkeletonTopology analyseTopology(std::size_t nodeCount, const std::vector<Edge>& edges) {
@@ -126,11 +118,7 @@ std::string invariantViolation(const SkeletonGraph& graph) {
 int fillMissingRadii(SkeletonGraph& graph) {
     const std::size_t nodeCount = graph.nodeCount();
     graph.radii.resize(nodeCount, 0.0);
-    std::vector<std::vector<int>> neighbours(nodeCount);
-    for (const Edge& e : graph.edges) {
-        neighbours[e[0]].push_back(e[1]);
-        neighbours[e[1]].push_back(e[0]);
-    }
+    const std::vector<std::vector<int>> neighbours = adjacencyLists(nodeCount, graph.edges);
     std::vector<bool> known(nodeCount);
     std::vector<int> frontier;
     int missing = 0;

@@ -43,6 +43,9 @@ std::string describe(const SkeletonTopology& topology);
 // Node degrees, one per node.
 std::vector<int> nodeDegrees(std::size_t nodeCount, const std::vector<Edge>& edges);
 
+// Each node's neighbours along the bones.
+std::vector<std::vector<int>> adjacencyLists(std::size_t nodeCount, const std::vector<Edge>& edges);
+
 // Sorts the edges, orders each edge's ends, drops duplicates and self-loops.
 void normalizeEdges(std::vector<Edge>& edges);
 

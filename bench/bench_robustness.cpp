@@ -1,0 +1,392 @@
+// Robustness suite: the skeleton of shapes whose answer is known, under what real scans do
+// to them. Prints a table (one row per shape and condition, one child process each) and a
+// summary per condition. Deterministic: the same seeds give the same table.
+//
+// Shapes: tubes along known curves (their skeleton is the curve) and real models from
+// Debian's libcgal-demo (known cycles; tips where the anatomy says). Conditions: clean;
+// Gaussian noise of 0.5, 1, 2% of the bounding-box diagonal (per coordinate); 1% and 5%
+// outliers; half the points in 10% of the surface; virtual scans from 1 and 4 views; five
+// scans misaligned by 0.5% and 1% (paper Fig. 9).
+//
+// Columns: cycles and tips found / expected ('!' = wrong); distance of the bones to the
+// known centre curve, mean and max, in % of the diagonal; share of bone length inside the
+// shape; the tip gap (mean distance from each end of the shape to the nearest skeleton
+// tip, % of the diagonal) without and with tip extension; warnings of the quality report;
+// time of the whole pipeline.
+//
+// usage: bench_robustness [POINTS]      default 6000 points per clean sample
+#include "run_in_child.h"
+
+#include <pcskeleton/curve_skeleton.h>
+#include <pcskeleton/sampled_shapes.h>
+#include <pcskeleton/scan_simulation.h>
+#include <pcskeleton/tip_extension.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Side_of_triangle_mesh.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+using namespace pcskeleton;
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
+
+constexpr int kUnknown = -1;
+
+// A shape to skeletonise: how to sample it, and what is known about its skeleton.
+struct Subject {
+    std::string name;
+    int cycles = kUnknown, tips = kUnknown;
+    double area = 0.0;
+    std::function<PointList(std::size_t n, std::uint32_t seed)> sample;
+    std::function<bool(const Point&)> inside;             // empty: not known
+    std::function<double(const Point&)> centreDistance;   // empty: no known centre curve
+    PointList ends;                                       // where the shape ends, tip by tip
+};
+
+struct Tube {
+    shapes::Polyline curve;
+    double radius;
+};
+
+bool insideTube(const Tube& tube, const Point& p) { return shapes::distanceToCurve(p, tube.curve) < tube.radius; }
+
+// Ends of a tube's curve (segment ends used once) that are not inside another tube, pushed
+// out by the radius: the points where the shape ends.
+PointList tubeEnds(const std::vector<Tube>& tubes) {
+    PointList ends;
+    for (std::size_t t = 0; t < tubes.size(); ++t) {
+        std::map<std::array<double, 3>, int> uses;
+        auto key = [](const Point& p) { return std::array<double, 3>{p.x(), p.y(), p.z()}; };
+        for (const shapes::Segment& s : tubes[t].curve) ++uses[key(s.a)], ++uses[key(s.b)];
+        for (const shapes::Segment& s : tubes[t].curve) {
+            for (const auto& [end, other] : {std::pair{s.a, s.b}, std::pair{s.b, s.a}}) {
+                if (uses[key(end)] != 1) continue;
+                bool covered = false;
+                for (std::size_t u = 0; u < tubes.size(); ++u) covered |= u != t && insideTube(tubes[u], end);
+                if (!covered) ends.push_back(end + tubes[t].radius * (end - other).normalized());
+            }
+        }
+    }
+    return ends;
+}
+
+Subject tubeSubject(const std::string& name, const std::vector<Tube>& tubes, int cycles, int tips) {
+    Subject s;
+    s.name = name;
+    s.cycles = cycles;
+    s.tips = tips;
+    for (const Tube& t : tubes) {
+        for (const shapes::Segment& segment : t.curve) s.area += 2.0 * M_PI * t.radius * (segment.b - segment.a).norm();
+    }
+    s.sample = [tubes, area = s.area](std::size_t n, std::uint32_t seed) {
+        PointList points;
+        for (std::size_t t = 0; t < tubes.size(); ++t) {
+            double length = 0.0;
+            for (const shapes::Segment& segment : tubes[t].curve) length += (segment.b - segment.a).norm();
+            const auto count = std::size_t(n * 2.0 * M_PI * tubes[t].radius * length / area);
+            for (const Point& p : shapes::tube(tubes[t].curve, tubes[t].radius, count, seed + 17 * t)) {
+                bool covered = false;
+                for (std::size_t u = 0; u < tubes.size(); ++u) covered |= u != t && insideTube(tubes[u], p);
+                if (!covered) points.push_back(p);
+            }
+        }
+        return points;
+    };
+    s.inside = [tubes](const Point& p) {
+        for (const Tube& t : tubes) {
+            if (insideTube(t, p)) return true;
+        }
+        return false;
+    };
+    s.centreDistance = [tubes](const Point& p) {
+        double d = std::numeric_limits<double>::infinity();
+        for (const Tube& t : tubes) d = std::min(d, shapes::distanceToCurve(p, t.curve));
+        return d;
+    };
+    s.ends = tubeEnds(tubes);
+    return s;
+}
+
+std::vector<Subject> knownShapes() {
+    using shapes::Polyline;
+    std::vector<Subject> subjects;
+    subjects.push_back(tubeSubject("straight tube", {{Polyline{{Point(0, 0, 0), Point(0, 0, 1.6)}}, 0.1}}, 0, 2));
+    Polyline y;
+    for (int arm = 0; arm < 3; ++arm) {
+        const double a = 2.0 * M_PI * arm / 3.0;
+        y.push_back({Point(0, 0, 0), Point(0.8 * std::cos(a), 0.8 * std::sin(a), 0)});
+    }
+    subjects.push_back(tubeSubject("Y branch", {{y, 0.08}}, 0, 3));
+    const Point fork(0, 0, 0.8), left(-0.4, 0, 1.3), right(0.4, 0, 1.3);
+    const Polyline tree{{Point(0, 0, 0), fork},       {fork, left},
+                        {fork, right},                {left, Point(-0.55, 0.25, 1.75)},
+                        {left, Point(-0.65, -0.2, 1.65)}, {right, Point(0.55, 0.25, 1.75)},
+                        {right, Point(0.65, -0.2, 1.65)}};
+    subjects.push_back(tubeSubject("tree", {{tree, 0.06}}, 0, 5));
+    subjects.push_back(tubeSubject("ring", {{shapes::circle(Point::Zero(), 0.8), 0.15}}, 1, 0));
+    Polyline eight = shapes::circle(Point(-0.7, 0, 0), 0.6);
+    const Polyline rightLoop = shapes::circle(Point(0.7, 0, 0), 0.6);
+    eight.insert(eight.end(), rightLoop.begin(), rightLoop.end());
+    eight.push_back({Point(-0.1, 0, 0), Point(0.1, 0, 0)});
+    subjects.push_back(tubeSubject("genus 2 (figure eight)", {{eight, 0.18}}, 2, 0));
+    std::vector<Tube> animal{{{{Point(-0.8, 0, 0), Point(0.8, 0, 0)}}, 0.3}};
+    for (double x : {-0.5, 0.5}) {
+        for (double side : {-0.15, 0.15}) animal.push_back({{{Point(x, side, 0), Point(x, side, -1.0)}}, 0.045});
+    }
+    subjects.push_back(tubeSubject("thin legs, thick body", animal, 0, 6));
+    return subjects;
+}
+
+// A closed mesh from libcgal-demo, sampled uniformly on its faces by CGAL.
+bool addModel(std::vector<Subject>& subjects, const std::filesystem::path& folder, const std::string& name, int cycles,
+              int tips) {
+    auto mesh = std::make_shared<Mesh>();
+    if (!CGAL::IO::read_polygon_mesh((folder / (name + ".off")).string(), *mesh) || !CGAL::is_triangle_mesh(*mesh)) {
+        return false;
+    }
+    Subject s;
+    s.name = name + " (libcgal-demo)";
+    s.cycles = cycles;
+    s.tips = tips;
+    s.area = CGAL::to_double(CGAL::Polygon_mesh_processing::area(*mesh));
+    s.sample = [mesh](std::size_t n, std::uint32_t seed) {
+        std::vector<Kernel::Point_3> samples;
+        CGAL::Polygon_mesh_processing::sample_triangle_mesh(
+            *mesh, std::back_inserter(samples),
+            CGAL::parameters::number_of_points_on_faces(n).do_sample_vertices(false).do_sample_edges(false).random_seed(
+                seed));
+        PointList points;
+        for (const auto& p : samples) points.emplace_back(p.x(), p.y(), p.z());
+        return points;
+    };
+    if (CGAL::is_closed(*mesh)) {
+        auto side = std::make_shared<CGAL::Side_of_triangle_mesh<Mesh, Kernel>>(*mesh);
+        s.inside = [mesh, side](const Point& p) {
+            return (*side)(Kernel::Point_3(p.x(), p.y(), p.z())) != CGAL::ON_UNBOUNDED_SIDE;
+        };
+    }
+    subjects.push_back(std::move(s));
+    return true;
+}
+
+std::filesystem::path extractModels(const std::vector<std::string>& names) {
+    const std::filesystem::path folder = std::filesystem::temp_directory_path() / "pcskeleton_bench_models";
+    std::string command = "mkdir -p '" + folder.string() + "' && tar -xzf /usr/share/doc/libcgal-demo/data.tar.gz -C '" +
+                          folder.string() + "' --strip-components=2";
+    for (const std::string& name : names) command += " data/meshes/" + name + ".off";
+    if (std::system((command + " 2>/dev/null").c_str()) != 0) return {};
+    return folder;
+}
+
+struct Condition {
+    const char* name;
+    std::function<PointList(const Subject&, std::size_t n, std::uint32_t seed)> make;
+};
+
+// Pixel of a virtual scanner: three sample spacings of a uniform sample of `n` points, so
+// that no pixel of a front surface is empty (which would let the back show through).
+double scanPixel(const Subject& s, std::size_t n) { return 3.0 * std::sqrt(s.area / double(n)); }
+
+std::vector<Condition> conditions() {
+    using namespace shapes;
+    auto noisy = [](double share) {
+        return [share](const Subject& s, std::size_t n, std::uint32_t seed) { return withNoise(s.sample(n, seed), share, seed); };
+    };
+    auto outliers = [](double share) {
+        return [share](const Subject& s, std::size_t n, std::uint32_t seed) {
+            return withOutliers(s.sample(n, seed), share, seed);
+        };
+    };
+    auto misaligned = [](double share) {
+        return [share](const Subject& s, std::size_t n, std::uint32_t seed) {
+            return misalignedScans(s.sample(n, seed), 5, scanPixel(s, n), share, seed);
+        };
+    };
+    return {
+        {"clean", [](const Subject& s, std::size_t n, std::uint32_t seed) { return s.sample(n, seed); }},
+        {"noise 0.5%", noisy(0.005)},
+        {"noise 1%", noisy(0.01)},
+        {"noise 2%", noisy(0.02)},
+        {"outliers 1%", outliers(0.01)},
+        {"outliers 5%", outliers(0.05)},
+        {"half in 10%", [](const Subject& s, std::size_t n, std::uint32_t seed) {
+             return unevenlyDense(s.sample(5 * n, seed), n, 0.1, seed);
+         }},
+        {"scan 1 view", [](const Subject& s, std::size_t n, std::uint32_t seed) {
+             return virtualScans(s.sample(2 * n, seed), 1, scanPixel(s, 2 * n));
+         }},
+        {"scan 4 views", [](const Subject& s, std::size_t n, std::uint32_t seed) {
+             return virtualScans(s.sample(n, seed), 4, scanPixel(s, n));
+         }},
+        {"misaligned 0.5%", misaligned(0.005)},
+        {"misaligned 1%", misaligned(0.01)},
+    };
+}
+
+struct Row {
+    int points = 0, cycles = 0, tips = 0, warnings = 0;
+    double meanDistance = -1, maxDistance = -1, inside = -1;  // -1: not measurable
+    double gapBefore = -1, gapAfter = -1;
+    double seconds = 0;
+};
+
+struct BoneSample {
+    Point position;
+    double length;
+};
+
+std::vector<BoneSample> sampleBones(const SkeletonGraph& skeleton, double step) {
+    std::vector<BoneSample> samples;
+    for (const Edge& e : skeleton.edges) {
+        const Point a = skeleton.nodes[e[0]], b = skeleton.nodes[e[1]];
+        const int pieces = std::max(1, int(std::ceil((b - a).norm() / step)));
+        for (int i = 0; i < pieces; ++i) {
+            samples.push_back({a + (b - a) * ((i + 0.5) / pieces), (b - a).norm() / pieces});
+        }
+    }
+    return samples;
+}
+
+// Mean distance from each end of the shape to the nearest tip (any node if there is none).
+double tipGap(const SkeletonGraph& skeleton, const PointList& ends) {
+    const std::vector<int> degree = nodeDegrees(skeleton.nodeCount(), skeleton.edges);
+    const bool hasTips = std::count(degree.begin(), degree.end(), 1) > 0;
+    double sum = 0.0;
+    for (const Point& end : ends) {
+        double nearest = std::numeric_limits<double>::infinity();
+        for (std::size_t n = 0; n < skeleton.nodeCount(); ++n) {
+            if (!hasTips || degree[n] == 1) nearest = std::min(nearest, (skeleton.nodes[n] - end).norm());
+        }
+        sum += nearest;
+    }
+    return sum / ends.size();
+}
+
+Row measure(const Subject& subject, const Condition& condition, std::size_t n) {
+    const PointList cloud = condition.make(subject, n, 11);
+    const double diagonal = shapes::boundingBoxDiagonal(subject.sample(n, 11));
+    SkeletonParameters parameters;
+    parameters.thinning.extendTips = false;
+    const auto start = std::chrono::steady_clock::now();
+    const SkeletonResult result = computeCurveSkeleton(cloud, parameters);
+    SkeletonGraph extended = result.skeleton;
+    extendTips(extended, cloud, result.quality.nodeSpacing);
+    Row row;
+    row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const SkeletonGraph& skeleton = ThinningParameters().extendTips ? extended : result.skeleton;
+
+    row.points = int(cloud.size());
+    const SkeletonTopology topology = analyseTopology(skeleton);
+    row.cycles = topology.cycles;
+    row.tips = topology.tips;
+    row.warnings = int(result.quality.warnings().size());
+    const std::vector<BoneSample> samples = sampleBones(skeleton, diagonal / 400.0);
+    double totalLength = 0.0, insideLength = 0.0, distanceSum = 0.0, maxDistance = 0.0;
+    for (const BoneSample& s : samples) {
+        totalLength += s.length;
+        if (subject.inside && subject.inside(s.position)) insideLength += s.length;
+        if (subject.centreDistance) {
+            const double d = subject.centreDistance(s.position);
+            distanceSum += d * s.length;
+            maxDistance = std::max(maxDistance, d);
+        }
+    }
+    if (totalLength > 0 && subject.inside) row.inside = 100.0 * insideLength / totalLength;
+    if (totalLength > 0 && subject.centreDistance) {
+        row.meanDistance = 100.0 * distanceSum / totalLength / diagonal;
+        row.maxDistance = 100.0 * maxDistance / diagonal;
+    }
+    if (!subject.ends.empty() && skeleton.nodeCount() > 0) {
+        row.gapBefore = 100.0 * tipGap(result.skeleton, subject.ends) / diagonal;
+        row.gapAfter = 100.0 * tipGap(extended, subject.ends) / diagonal;
+    }
+    return row;
+}
+
+std::string found(int got, int expected) {
+    if (expected == kUnknown) return std::to_string(got) + "/?";
+    return std::to_string(got) + "/" + std::to_string(expected) + (got == expected ? " " : "!");
+}
+
+std::string number(double value, const char* format = "%.2f") {
+    if (value < 0) return "-";
+    char text[32];
+    std::snprintf(text, sizeof text, format, value);
+    return text;
+}
+
+struct Tally {
+    int cases = 0, right = 0, gaps = 0;
+    double gapBefore = 0, gapAfter = 0, meanDistance = 0, inside = 0;
+    int distances = 0, insides = 0;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const std::size_t n = argc > 1 ? std::strtoull(argv[1], nullptr, 10) : 6000;
+    std::vector<Subject> subjects = knownShapes();
+    const std::vector<std::string> models{"elephant", "knot1", "eight", "hand"};
+    const std::filesystem::path folder = extractModels(models);
+    const std::map<std::string, std::pair<int, int>> modelTopology{
+        {"elephant", {0, kUnknown}}, {"knot1", {1, 0}}, {"eight", {2, 0}}, {"hand", {0, 6}}};
+    for (const std::string& model : models) {
+        const auto [cycles, tips] = modelTopology.at(model);
+        if (folder.empty() || !addModel(subjects, folder, model, cycles, tips)) {
+            std::printf("(%s skipped: install libcgal-demo)\n", model.c_str());
+        }
+    }
+
+    std::printf("Skeleton robustness, %zu points per clean sample, %ld cores. Distances and gaps in %% of the "
+                "bounding-box diagonal.\n",
+                n, sysconf(_SC_NPROCESSORS_ONLN));
+    std::printf("%-24s %-16s %6s %6s %6s %6s %6s %7s %13s %4s %6s\n", "shape", "condition", "points", "cycles",
+                "tips", "mean d", "max d", "inside", "tip gap", "warn", "time");
+    std::map<std::string, Tally> byCondition;
+    for (const Subject& subject : subjects) {
+        for (const Condition& condition : conditions()) {
+            Row row;
+            double peak = 0;
+            if (!runInChild([&] { return measure(subject, condition, n); }, row, peak)) {
+                std::printf("%-24s %-16s failed\n", subject.name.c_str(), condition.name);
+                continue;
+            }
+            const std::string gap = row.gapBefore < 0 ? "-" : number(row.gapBefore) + "->" + number(row.gapAfter);
+            std::printf("%-24s %-16s %6d %6s %6s %6s %6s %6s%% %13s %4d %5.1fs\n", subject.name.c_str(), condition.name,
+                        row.points, found(row.cycles, subject.cycles).c_str(), found(row.tips, subject.tips).c_str(),
+                        number(row.meanDistance).c_str(), number(row.maxDistance).c_str(),
+                        number(row.inside, "%.0f").c_str(), gap.c_str(), row.warnings, row.seconds);
+            std::fflush(stdout);
+            Tally& t = byCondition[condition.name];
+            ++t.cases;
+            t.right += row.cycles == subject.cycles && (subject.tips == kUnknown || row.tips == subject.tips);
+            if (row.gapBefore >= 0) t.gapBefore += row.gapBefore, t.gapAfter += row.gapAfter, ++t.gaps;
+            if (row.meanDistance >= 0) t.meanDistance += row.meanDistance, ++t.distances;
+            if (row.inside >= 0) t.inside += row.inside, ++t.insides;
+        }
+    }
+    std::printf("\nSummary per condition (means over the shapes that have the measure)\n");
+    std::printf("%-16s %13s %8s %8s %15s\n", "condition", "right topology", "mean d", "inside", "tip gap");
+    for (const Condition& condition : conditions()) {
+        const Tally& t = byCondition[condition.name];
+        std::printf("%-16s %9d/%-3d %8s %7s%% %15s\n", condition.name, t.right, t.cases,
+                    number(t.distances ? t.meanDistance / t.distances : -1).c_str(),
+                    number(t.insides ? t.inside / t.insides : -1, "%.0f").c_str(),
+                    t.gaps ? (number(t.gapBefore / t.gaps) + "->" + number(t.gapAfter / t.gaps)).c_str() : "-");
+    }
+    return 0;
+}
