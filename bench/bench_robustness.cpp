@@ -15,10 +15,14 @@
 // time of the whole pipeline.
 //
 // usage: bench_robustness [POINTS]      default 6000 points per clean sample
+//        bench_robustness --write SHAPE CONDITION FILE [POINTS]
+//                                       writes one case's cloud (.xyz or .ply), e.g. for
+//                                       the README's pictures
 #include "run_in_child.h"
 
 #include <pcskeleton/curve_skeleton.h>
 #include <pcskeleton/sampled_shapes.h>
+#include <pcskeleton/skeleton_io.h>
 #include <pcskeleton/scan_simulation.h>
 #include <pcskeleton/tip_extension.h>
 
@@ -69,8 +73,11 @@ bool insideTube(const Tube& tube, const Point& p) { return shapes::distanceToCur
 PointList tubeEnds(const std::vector<Tube>& tubes) {
     PointList ends;
     for (std::size_t t = 0; t < tubes.size(); ++t) {
-        std::map<std::array<double, 3>, int> uses;
-        auto key = [](const Point& p) { return std::array<double, 3>{p.x(), p.y(), p.z()}; };
+        std::map<std::array<long long, 3>, int> uses;
+        // Rounded, so that the ends of segments meeting at a point computed twice match.
+        auto key = [](const Point& p) {
+            return std::array<long long, 3>{std::llround(p.x() * 1e9), std::llround(p.y() * 1e9), std::llround(p.z() * 1e9)};
+        };
         for (const shapes::Segment& s : tubes[t].curve) ++uses[key(s.a)], ++uses[key(s.b)];
         for (const shapes::Segment& s : tubes[t].curve) {
             for (const auto& [end, other] : {std::pair{s.a, s.b}, std::pair{s.b, s.a}}) {
@@ -337,7 +344,26 @@ struct Tally {
 
 }  // namespace
 
+// Writes the cloud of one case; returns the exit status.
+int writeCase(const std::vector<Subject>& subjects, const std::string& shape, const std::string& condition,
+              const std::string& file, std::size_t n) {
+    for (const Subject& subject : subjects) {
+        for (const Condition& c : conditions()) {
+            if (subject.name == shape && c.name == condition) {
+                writePointCloud(c.make(subject, n, 11), file);
+                return 0;
+            }
+        }
+    }
+    std::fprintf(stderr, "bench_robustness: no case '%s' / '%s'\n", shape.c_str(), condition.c_str());
+    return 2;
+}
+
 int main(int argc, char** argv) {
+    if (argc >= 5 && std::string(argv[1]) == "--write") {
+        const std::size_t n = argc > 5 ? std::strtoull(argv[5], nullptr, 10) : 6000;
+        return writeCase(knownShapes(), argv[2], argv[3], argv[4], n);
+    }
     const std::size_t n = argc > 1 ? std::strtoull(argv[1], nullptr, 10) : 6000;
     std::vector<Subject> subjects = knownShapes();
     const std::vector<std::string> models{"elephant", "knot1", "eight", "hand"};

@@ -25,8 +25,22 @@ $GRAPH check eight.ply --cycles 2 --components 1
   --correspondence elephant.nodes 2>elephant.log
 $GRAPH check elephant.ply --cycles 0 --components 1 --min-tips 6
 
-# The summary line on stderr.
+# The summary line and the quality report on stderr.
 grep -q "^pcskeleton: .*knot.off: 2080 points -> .* 1 cycle, 0 tips" knot.log || { cat knot.log; fail "no summary line"; }
+grep -q "^Contraction: .* converged" knot.log || { cat knot.log; fail "the report does not say contraction converged"; }
+grep -q "^No warnings." knot.log || { cat knot.log; fail "a clean knot should give no warning"; }
+grep -q "^Tip extension: [0-9]* limbs extended" elephant.log || { cat elephant.log; fail "the elephant's limbs were not extended"; }
+
+# --report writes the same report to a file; an unconverged run warns and names the fix.
+"$PCSKELETON" $M/knot.off -o knot_one.ply --iterations 1 --report knot_one.txt 2>/dev/null
+grep -q "^Warning: Contraction stopped at the iteration limit.*maximum iterations" knot_one.txt \
+  || { cat knot_one.txt; fail "--report lacks the iteration-limit warning"; }
+
+# --no-extend-tips gives the paper's shorter skeleton: fewer nodes than with extension.
+"$PCSKELETON" $M/elephant.off -o elephant_paper.ply --no-extend-tips --quiet
+paper=$($GRAPH show elephant_paper.ply | sed 's/.*nodes.: \([0-9]*\).*/\1/')
+extended=$($GRAPH show elephant.ply | sed 's/.*nodes.: \([0-9]*\).*/\1/')
+[ "$paper" -lt "$extended" ] || fail "--no-extend-tips gave $paper nodes, not fewer than the default's $extended"
 
 # One node index per input point; the contracted points (binary PLY) read back as input.
 [ "$(wc -l <elephant.nodes)" = 2775 ] || fail "correspondence has $(wc -l <elephant.nodes) lines, expected 2775"
@@ -50,7 +64,7 @@ fine=$($GRAPH show knot.ply | sed 's/.*nodes.: \([0-9]*\).*/\1/')
 # --help documents every option with its default.
 "$PCSKELETON" --help >help.txt
 for option in --contracted --correspondence --k --wl --wh --sl --max-wl --max-wh --row-limit --iterations \
-              --threshold --radius --quiet; do
+              --threshold --radius --no-extend-tips --refine --report --quiet; do
   grep -q -- "$option" help.txt || fail "--help does not document $option"
 done
 grep -q "\[0.02\]" help.txt || fail "--help does not give the radius default"

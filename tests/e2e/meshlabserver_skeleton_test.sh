@@ -21,8 +21,9 @@ tar -xzf /usr/share/doc/libcgal-dev/data.tar.gz data/meshes/double-torus-example
 # The whole pipeline, one script: a double torus has two independent cycles.
 mkdir -p double && (cd double && server run.log -i ../data/meshes/double-torus-example.off \
   -s "$SCRIPTS/compute_curve_skeleton.mlx")
-grep -q "Skeleton 'double-torus-example skeleton': .*2 cycles" double/run.log \
-  || { cat double/run.log; echo "FAIL: the log has no skeleton summary with 2 cycles"; exit 1; }
+grep -q "Skeleton 'double-torus-example skeleton', quality report" double/run.log \
+  && grep -q "Skeleton: .*2 cycles" double/run.log && grep -q "Contraction: .*converged" double/run.log \
+  || { cat double/run.log; echo "FAIL: the log has no quality report with 2 cycles and converged"; exit 1; }
 $GRAPH check double/skeleton.ply --cycles 2 --components 1
 
 # MeshLab reads the PLY back with its edges: exporting the re-opened file gives the same graph.

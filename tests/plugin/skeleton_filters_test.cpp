@@ -193,3 +193,67 @@ TEST_F(SkeletonFilterTest, ExportNeverProposesAnExistingFile) {
     EXPECT_EQ(defaults(action(kExportFilter)).getSaveFileName("fileName"), QString::fromStdString(dir + "/ring_2.ply"));
     std::system(("rm -rf '" + dir + "'").c_str());
 }
+
+namespace {
+
+// The log lines a filter wrote, each with its level.
+struct LogCapture {
+    explicit LogCapture(MeshFilterInterface* plugin) : plugin_(plugin) { plugin->setLog(&log); }
+    ~LogCapture() { plugin_->setLog(nullptr); }
+    QString text(int level) const {
+        QString all;
+        for (const auto& entry : log.logStringList()) {
+            if (entry.first == level) all += entry.second + "\n";
+        }
+        return all;
+    }
+    GLLogStream log;
+    MeshFilterInterface* plugin_;
+};
+
+}  // namespace
+
+TEST_F(SkeletonFilterTest, LogsTheQualityReportWithItsWarningsAsWarnings) {
+    LogCapture capture(plugin);
+    addPointLayer(pcskeleton::shapes::torus(4000, 1.0, 0.25), "torus");
+    QAction* a = action(kSkeletonFilter);
+    ASSERT_TRUE(apply(a, defaults(a))) << plugin->errorMsg().toStdString();
+    const QString report = capture.text(GLLogStream::FILTER);
+    EXPECT_TRUE(report.contains("quality report")) << report.toStdString();
+    EXPECT_TRUE(report.contains("1 cycle, 0 tips")) << report.toStdString();
+    EXPECT_TRUE(report.contains("converged")) << report.toStdString();
+    EXPECT_TRUE(report.contains("No warnings.")) << report.toStdString();
+    EXPECT_TRUE(capture.text(GLLogStream::WARNING).isEmpty());
+
+    // The same cloud stopped after one iteration: the report warns, at warning level.
+    RichParameterList oneIteration = defaults(a);
+    oneIteration.setValue("maxIterations", IntValue(1));
+    document.setCurrentMesh(document.meshList.front()->id());
+    ASSERT_TRUE(apply(a, oneIteration)) << plugin->errorMsg().toStdString();
+    const QString warnings = capture.text(GLLogStream::WARNING);
+    EXPECT_TRUE(warnings.contains("iteration limit")) << warnings.toStdString();
+}
+
+TEST_F(SkeletonFilterTest, TipExtensionAndRefinementAreParametersWithHelp) {
+    QAction* a = action(kSkeletonFilter);
+    const RichParameterList parameters = defaults(a);
+    ASSERT_TRUE(parameters.hasParameter("extendTips"));
+    ASSERT_TRUE(parameters.hasParameter("refine"));
+    EXPECT_TRUE(parameters.getBool("extendTips"));
+    EXPECT_FALSE(parameters.getBool("refine"));
+    EXPECT_FALSE(parameters.getParameterByName("refine").fieldDescription().isEmpty());
+
+    // Without extension, a capped tube's skeleton is shorter than with it.
+    auto length = [&](bool extend) {
+        addPointLayer(pcskeleton::shapes::cylinder(4000, 0.1, 1.0, /*capped=*/true), "tube");
+        RichParameterList p = defaults(a);
+        p.setValue("extendTips", BoolValue(extend));
+        EXPECT_TRUE(apply(a, p)) << plugin->errorMsg().toStdString();
+        float low = 1e9f, high = -1e9f;
+        for (const auto& v : document.mm()->cm.vert) low = std::min(low, v.cP().Z()), high = std::max(high, v.cP().Z());
+        return high - low;
+    };
+    const float paper = length(false), extended = length(true);
+    EXPECT_GT(extended, paper + 0.05f);
+    EXPECT_NEAR(extended, 1.2f, 0.03f);
+}

@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Regenerates the README's troubleshooting pictures (docs/troubleshooting/*.png): typical
+# failures on the robustness suite's cases, and the parameter that fixes each. Needs a
+# build (scripts/build.sh). Usage: bash scripts/troubleshooting_pictures.sh
+set -euo pipefail
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+BENCH="$ROOT/build/bench/bench_robustness"
+PCSKELETON="$ROOT/build/cli/pcskeleton"
+RENDER="/usr/bin/python3 $ROOT/scripts/render_points.py"
+PICTURES="$ROOT/docs/troubleshooting"
+WORK="$(mktemp -d)"
+trap 'rm -rf "$WORK"' EXIT
+mkdir -p "$PICTURES"
+cd "$WORK"
+
+# picture NAME TITLE SHAPE CONDITION "LABEL|OPTIONS" "LABEL|OPTIONS"
+picture() {
+  local name="$1" title="$2" shape="$3" condition="$4"
+  shift 4
+  "$BENCH" --write "$shape" "$condition" "$name.xyz"
+  local panels=("$name.xyz:input ($condition)")
+  local i=0
+  for run in "$@"; do
+    local label="${run%%|*}" options="${run#*|}"
+    # shellcheck disable=SC2086
+    "$PCSKELETON" "$name.xyz" -o "$name-$i.ply" --quiet $options
+    panels+=("$name-$i.ply:$label")
+    i=$((i + 1))
+  done
+  $RENDER "$PICTURES/$name.png" "$title" "${panels[@]}"
+  echo "wrote $PICTURES/$name.png"
+}
+
+picture short-limbs "Limbs end short of the shape: tip extension (on by default)" \
+  "tree" "clean" "--no-extend-tips|--no-extend-tips" "default|"
+picture noise-spurs "Noise leaves spurs: --refine (or raise --k)" \
+  "Y branch" "noise 2%" "default|" "--refine|--refine"
+picture not-converged "Contraction stopped early: raise --iterations" \
+  "ring" "clean" "--iterations 1|--iterations 1" "default|"
+picture spacing-too-large "Node spacing too large merges loops: lower --radius" \
+  "genus 2 (figure eight)" "clean" "--radius 0.15|--radius 0.15" "default (0.02)|"
+picture outliers "Outliers make false loops: remove them before contracting" \
+  "Y branch" "outliers 1%" "default|"
