@@ -33,11 +33,9 @@ picture() {
 
 picture short-limbs "Limbs end short of the shape: tip extension (on by default)" \
   "tree" "clean" "--no-extend-tips|--no-extend-tips" "default|"
-picture noise-spurs "Noise leaves spurs: --refine (or raise --k)" \
-  "Y branch" "noise 2%" "default|" "--refine|--refine"
 picture not-converged "Contraction stopped early: raise --iterations" \
   "ring" "clean" "--iterations 1|--iterations 1" "default|"
 picture spacing-too-large "Node spacing too large merges loops: lower --radius" \
-  "genus 2 (figure eight)" "clean" "--radius 0.15|--radius 0.15" "default (0.02)|"
+  "genus 2 (figure eight)" "clean" "--radius 0.3|--radius 0.3" "default (0.02)|"
 picture outliers "Outliers make false loops: remove them before contracting" \
   "Y branch" "outliers 1%" "default|"
