@@ -153,7 +153,7 @@ std::vector<std::string> SkeletonQuality::warnings() const {
 
 std::string describe(const SkeletonQuality& q) {
     std::ostringstream s;
-    s << "Skeleton: " << describe(q.topology) << "; node spacing " << q.nodeSpacing << ".\n";
+    s << "Skeleton: " << describe(q.topology) << "; node spacing " << std::setprecision(3) << q.nodeSpacing << ".\n";
     if (q.stopReason == StopReason::NotStopped) {
         s << "Contraction: thinned from saved contracted points.\n";
     } else {
@@ -164,8 +164,10 @@ std::string describe(const SkeletonQuality& q) {
       << "; " << q.uncontractedPoints << " did not contract.\n";
     s << "Tip extension: ";
     if (!q.tipsExtended) s << "off.\n";
-    else s << count(std::size_t(q.tipExtension.extendedTips), "tip", "tips") << " extended (mean "
-           << q.tipExtension.meanLength << ", longest " << q.tipExtension.longest << ").\n";
+    else if (q.tipExtension.extendedTips == 0) s << "no limb to extend.\n";
+    else s << count(std::size_t(q.tipExtension.extendedTips), "limb", "limbs") << " extended, by "
+           << std::setprecision(3) << q.tipExtension.meanLength << " on average, at most "
+           << q.tipExtension.longest << ".\n";
     s << "Refinement: " << (q.refined ? describe(q.refinement) : std::string("off")) << ".\n";
     const std::vector<std::string> warnings = q.warnings();
     if (warnings.empty()) s << "No warnings.";
