@@ -285,7 +285,7 @@ double tipGap(const SkeletonGraph& skeleton, const PointList& ends) {
 
 Row measure(const Subject& subject, const Condition& condition, std::size_t n) {
     const PointList cloud = condition.make(subject, n, 11);
-    const double diagonal = shapes::boundingBoxDiagonal(subject.sample(n, 11));
+    const double diagonal = boundingBox(subject.sample(n, 11)).diagonal().norm();
     SkeletonParameters parameters;
     parameters.thinning.extendTips = false;
     const auto start = std::chrono::steady_clock::now();

@@ -232,7 +232,7 @@ TEST(ScanSimulation, PerturbationsDoWhatTheySay) {
     // Half of the points in 10% of the surface.
     const PointList uneven = shapes::unevenlyDense(sphere, 4000, 0.1, 3);
     ASSERT_EQ(uneven.size(), 4000u);
-    const double diagonal = shapes::boundingBoxDiagonal(sphere);
+    const double diagonal = boundingBox(sphere).diagonal().norm();
     const PointList noisy = shapes::withNoise(sphere, 0.01, 4);
     double squared = 0;
     for (std::size_t i = 0; i < sphere.size(); ++i) squared += (noisy[i] - sphere[i]).squaredNorm();

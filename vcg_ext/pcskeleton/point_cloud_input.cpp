@@ -78,6 +78,12 @@ void rejectCollinear(const PointList& points) {
 
 }  // namespace
 
+Eigen::AlignedBox3d boundingBox(const PointList& points) {
+    Eigen::AlignedBox3d box;
+    for (const Point& p : points) box.extend(p);
+    return box;
+}
+
 NormalizedCloud normalizeCloud(const PointList& input, std::size_t minimumUniquePoints) {
     if (input.empty()) throw InvalidInput("The point layer is empty.");
     rejectNonFinite(input, "points", "Remove them first (e.g. Filters > Cleaning and Repairing).");
@@ -93,8 +99,7 @@ NormalizedCloud normalizeCloud(const PointList& input, std::size_t minimumUnique
         throw InvalidInput(msg.str());
     }
 
-    Eigen::AlignedBox3d box;
-    for (const Point& p : cloud.points) box.extend(p);
+    const Eigen::AlignedBox3d box = boundingBox(cloud.points);
     cloud.center = box.center();
     cloud.scale = kNormalizedLongestSide / box.sizes().maxCoeff();
     cloud.diagonal = box.diagonal().norm() * cloud.scale;

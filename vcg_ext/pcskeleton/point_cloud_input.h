@@ -2,6 +2,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <stdexcept>
 #include <string>
@@ -35,6 +36,9 @@ struct NormalizedCloud {
 };
 
 constexpr double kNormalizedLongestSide = 1.6;
+
+// The axis-aligned box holding the points (empty for no points).
+Eigen::AlignedBox3d boundingBox(const PointList& points);
 
 // Validates and normalises. Throws InvalidInput, naming the problem and what to do,
 // for: no points; NaN or infinite coordinates; fewer than `minimumUniquePoints`

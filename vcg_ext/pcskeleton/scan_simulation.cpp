@@ -12,12 +12,6 @@ namespace pcskeleton::shapes {
 
 namespace {
 
-Eigen::AlignedBox3d boundingBox(const PointList& points) {
-    Eigen::AlignedBox3d box;
-    for (const Point& p : points) box.extend(p);
-    return box;
-}
-
 // The i-th of `views` directions around the z axis, looking 30 degrees down.
 Point viewDirection(int i, int views) {
     const double angle = 2.0 * M_PI * (i + 0.25) / views;
@@ -48,11 +42,9 @@ std::vector<int> visibleIndices(const PointList& dense, const Point& direction, 
 
 }  // namespace
 
-double boundingBoxDiagonal(const PointList& points) { return boundingBox(points).diagonal().norm(); }
-
 PointList withNoise(const PointList& points, double share, std::uint32_t seed) {
     std::mt19937 random(seed);
-    std::normal_distribution<double> gaussian(0.0, share * boundingBoxDiagonal(points));
+    std::normal_distribution<double> gaussian(0.0, share * boundingBox(points).diagonal().norm());
     PointList noisy;
     noisy.reserve(points.size());
     for (const Point& p : points) noisy.push_back(p + Point(gaussian(random), gaussian(random), gaussian(random)));

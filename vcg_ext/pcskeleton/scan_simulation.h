@@ -9,8 +9,6 @@
 
 namespace pcskeleton::shapes {
 
-double boundingBoxDiagonal(const PointList& points);
-
 // Moves every point by Gaussian noise whose standard deviation, per coordinate, is
 // `share` of the bounding-box diagonal.
 PointList withNoise(const PointList& points, double share, std::uint32_t seed = 1);

@@ -152,8 +152,7 @@ int fillMissingRadii(SkeletonGraph& graph) {
     }
 
     // Components without any radius.
-    Eigen::AlignedBox3d extent;
-    for (const Point& p : graph.nodes) extent.extend(p);
+    const Eigen::AlignedBox3d extent = boundingBox(graph.nodes);
     const double extentFallback = nodeCount > 0 && extent.diagonal().norm() > 0.0 ? 0.01 * extent.diagonal().norm() : 1.0;
     DisjointSets sets(nodeCount);
     for (const Edge& e : graph.edges) sets.unite(e[0], e[1]);

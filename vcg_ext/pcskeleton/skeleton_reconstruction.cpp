@@ -56,8 +56,7 @@ void checkInputs(const PointList& points, const SkeletonGraph& skeleton) {
 // The box holding the points and every node's ball, with a margin, as a grid whose cell
 // counts allow repeated halving (the multigrid levels).
 FieldGrid domainGrid(const PointList& points, const SkeletonGraph& skeleton, int resolution, Frame& frame) {
-    Eigen::AlignedBox3d box;
-    for (const Point& p : points) box.extend(p);
+    Eigen::AlignedBox3d box = boundingBox(points);
     for (std::size_t n = 0; n < skeleton.nodeCount(); ++n) {
         box.extend(skeleton.nodes[n] - Point::Constant(skeleton.radii[n]));
         box.extend(skeleton.nodes[n] + Point::Constant(skeleton.radii[n]));
