@@ -38,24 +38,29 @@ TipExtensionReport extendTips(SkeletonGraph& skeleton, const PointList& points, 
         const Point direction = tipDirection(skeleton, limb, nodeSpacing);
         if (!direction.allFinite()) continue;  // coincident nodes: no direction to extend in
         const Point tipPosition = skeleton.nodes[tip];
+        struct Offset {
+            double along, across;  // of a tip point, relative to the limb's axis through the tip
+        };
+        std::vector<Offset> offsets;
+        for (int i : pointsOf[tip]) {
+            const Point offset = points[i] - tipPosition;
+            const double along = offset.dot(direction);
+            offsets.push_back({along, (offset - along * direction).norm()});
+        }
 
         // Only points within the limb's tube count: an outlier or a noisy point off to the
         // side must not pull the end out.
         double reach = 0.0;
-        for (int i : pointsOf[tip]) {
-            const Point offset = points[i] - tipPosition;
-            const double along = offset.dot(direction);
-            if ((offset - along * direction).norm() <= kTubeRadii * skeleton.radii[tip]) reach = std::max(reach, along);
+        for (const Offset& o : offsets) {
+            if (o.across <= kTubeRadii * skeleton.radii[tip]) reach = std::max(reach, o.along);
         }
         if (reach <= 0.1 * nodeSpacing) continue;
 
         const double endZone = reach - 0.25 * skeleton.radii[tip];
         double thickness = 0.0;
         int endPoints = 0;
-        for (int i : pointsOf[tip]) {
-            const Point offset = points[i] - tipPosition;
-            const double along = offset.dot(direction);
-            if (along >= endZone) thickness += (offset - along * direction).norm(), ++endPoints;
+        for (const Offset& o : offsets) {
+            if (o.along >= endZone) thickness += o.across, ++endPoints;
         }
         thickness = endPoints > 0 ? thickness / endPoints : 0.0;
         if (!isPositiveFinite(thickness)) thickness = 0.5 * skeleton.radii[tip];
