@@ -193,7 +193,7 @@ int main(int argc, char** argv) {
                          "pcskeleton: %s: %zu points -> %s; contraction: %zu iterations, %s; "
                          "time: 1-rings %.2f s, contraction %.2f s, thinning %.2f s, embedding %.2f s, "
                          "finishing %.2f s\n%s\n",
-                         options.input.c_str(), points.size(), describe(analyseTopology(result.skeleton)).c_str(),
+                         options.input.c_str(), points.size(), describe(result.quality.topology).c_str(),
                          result.contraction.iterations.size(), describe(result.contraction.stopReason).c_str(),
                          s.neighbourhoods, s.contraction, s.thinning, s.embedding, s.finishing, report.c_str());
         }

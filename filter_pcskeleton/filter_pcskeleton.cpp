@@ -198,10 +198,11 @@ QString FilterPCSkeletonPlugin::filterInfo(FilterIDType filter) const {
                 "Computes the curve skeleton of the current layer's points: Laplacian contraction, then "
                 "farthest-point sampling of the contracted points, connection through the points' 1-rings and "
                 "collapse of every triangle (the shape's loops survive), then each node moves to the centre of "
-                "its points, and limbs are extended to their ends. Adds a skeleton layer (vertices = nodes, edges = bones, radius in vertex "
-                "quality and in the attribute pcs_radius), and logs a quality report: topology, convergence, and "
-                "warnings naming the parameter to change. The input layer is not changed. Save the skeleton with Export Skeleton: MeshLab's "
-                "own PLY export drops edges.") + kPaperReference;
+                "its points, and limbs are extended to their ends. Adds a skeleton layer (vertices = nodes, "
+                "edges = bones, radius in vertex quality and in the attribute pcs_radius), and logs a quality "
+                "report: topology, convergence, and warnings naming the parameter to change. The input layer is "
+                "not changed. Save the skeleton with Export Skeleton: MeshLab's own PLY export drops edges.") +
+                kPaperReference;
         case FP_SKELETON_FROM_CONTRACTED:
             return QString(
                 "Thinning alone: turns the current layer, made by Contract Point Cloud (Laplacian), into a "
