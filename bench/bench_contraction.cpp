@@ -6,8 +6,8 @@
 //        default sizes: 10000 100000 1000000
 #include "run_in_child.h"
 
-#include <pcskeleton/laplacian_contraction.h>
-#include <pcskeleton/sampled_shapes.h>
+#include <pcskeleton/contraction/laplacian_contraction.h>
+#include "support/sampled_shapes.h"
 
 #include <chrono>
 #include <cstdio>

@@ -9,8 +9,8 @@
 // usage: bench_reconstruction [RESOLUTION ...]      default: 64 128 256
 #include "run_in_child.h"
 
-#include <pcskeleton/sampled_shapes.h>
-#include <pcskeleton/skeleton_reconstruction.h>
+#include "support/sampled_shapes.h"
+#include <pcskeleton/reconstruction/skeleton_reconstruction.h>
 
 #include <chrono>
 #include <cstdlib>

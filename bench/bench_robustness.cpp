@@ -21,10 +21,10 @@
 #include "run_in_child.h"
 
 #include <pcskeleton/curve_skeleton.h>
-#include <pcskeleton/sampled_shapes.h>
-#include <pcskeleton/skeleton_io.h>
-#include <pcskeleton/scan_simulation.h>
-#include <pcskeleton/tip_extension.h>
+#include "support/sampled_shapes.h"
+#include <pcskeleton/io/skeleton_io.h>
+#include "support/scan_simulation.h"
+#include <pcskeleton/analysis/tip_extension.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>

@@ -6,7 +6,7 @@
 #include "run_in_child.h"
 
 #include <pcskeleton/curve_skeleton.h>
-#include <pcskeleton/sampled_shapes.h>
+#include "support/sampled_shapes.h"
 
 #include <chrono>
 #include <cstdlib>

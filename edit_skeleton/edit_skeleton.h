@@ -8,7 +8,7 @@
 
 #include <common/interfaces.h>
 
-#include <pcskeleton/skeleton_editing.h>
+#include <pcskeleton/editing/skeleton_editing.h>
 
 #include <QPoint>
 

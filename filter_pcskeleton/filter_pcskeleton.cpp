@@ -4,8 +4,8 @@
 #include "skeleton_layer.h"
 
 #include <pcskeleton/curve_skeleton.h>
-#include <pcskeleton/skeleton_editing.h>
-#include <pcskeleton/skeleton_io.h>
+#include <pcskeleton/editing/skeleton_editing.h>
+#include <pcskeleton/io/skeleton_io.h>
 
 #include <vcg/complex/allocate.h>
 

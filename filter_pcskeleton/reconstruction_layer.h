@@ -5,8 +5,8 @@
 
 #include <common/meshmodel.h>
 
-#include <pcskeleton/progress.h>
-#include <pcskeleton/skeleton_reconstruction.h>
+#include <pcskeleton/core/progress.h>
+#include <pcskeleton/reconstruction/skeleton_reconstruction.h>
 
 namespace pcskeleton::meshlab {
 

@@ -9,7 +9,7 @@
 
 #include <common/meshmodel.h>
 
-#include <pcskeleton/skeleton_graph.h>
+#include <pcskeleton/skeleton/skeleton_graph.h>
 
 #include <QString>
 

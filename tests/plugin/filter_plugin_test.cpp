@@ -1,7 +1,7 @@
 // The contraction filter through the real plugin .so.
 #include "plugin_fixture.h"
 
-#include <pcskeleton/sampled_shapes.h>
+#include "support/sampled_shapes.h"
 
 #include <QCoreApplication>
 

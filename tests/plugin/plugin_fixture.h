@@ -5,8 +5,8 @@
 #include <common/interfaces.h>
 #include <common/meshmodel.h>
 
-#include <pcskeleton/point_cloud_input.h>
-#include <pcskeleton/skeleton_graph.h>
+#include <pcskeleton/core/point_cloud_input.h>
+#include <pcskeleton/skeleton/skeleton_graph.h>
 
 #include <vcg/complex/allocate.h>
 

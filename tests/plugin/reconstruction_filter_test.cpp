@@ -5,7 +5,7 @@
 
 #include <vcg/complex/append.h>
 
-#include <pcskeleton/sampled_shapes.h>
+#include "support/sampled_shapes.h"
 
 #include <map>
 

@@ -2,8 +2,8 @@
 // nodes) through the real plugin .so, on layers whose answer is known.
 #include "plugin_fixture.h"
 
-#include <pcskeleton/sampled_shapes.h>
-#include <pcskeleton/skeleton_graph.h>
+#include "support/sampled_shapes.h"
+#include <pcskeleton/skeleton/skeleton_graph.h>
 
 namespace {
 

@@ -2,8 +2,8 @@
 // contracted layer, export and re-import, and the errors users see.
 #include "plugin_fixture.h"
 
-#include <pcskeleton/sampled_shapes.h>
-#include <pcskeleton/skeleton_io.h>
+#include "support/sampled_shapes.h"
+#include <pcskeleton/io/skeleton_io.h>
 
 #include <QFile>
 

@@ -1,8 +1,8 @@
 #include "pcskeleton/curve_skeleton.h"
 
-#include "pcskeleton/skeleton_embedding.h"
-#include "pcskeleton/skeleton_refinement.h"
-#include "pcskeleton/skeleton_thinning.h"
+#include "pcskeleton/skeleton/skeleton_embedding.h"
+#include "pcskeleton/analysis/skeleton_refinement.h"
+#include "pcskeleton/skeleton/skeleton_thinning.h"
 
 #include <chrono>
 #include <sstream>

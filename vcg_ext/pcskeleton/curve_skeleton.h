@@ -8,9 +8,9 @@
 //               earlier, skeletonFromContractedPoints(input, contracted).
 #pragma once
 
-#include "pcskeleton/laplacian_contraction.h"
-#include "pcskeleton/skeleton_graph.h"
-#include "pcskeleton/skeleton_quality.h"
+#include "pcskeleton/contraction/laplacian_contraction.h"
+#include "pcskeleton/skeleton/skeleton_graph.h"
+#include "pcskeleton/analysis/skeleton_quality.h"
 
 namespace pcskeleton {
 

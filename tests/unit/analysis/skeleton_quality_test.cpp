@@ -1,0 +1,62 @@
+// The quality report through the whole pipeline, on shapes whose skeleton is known.
+#include <pcskeleton/curve_skeleton.h>
+#include "support/sampled_shapes.h"
+#include "support/scan_simulation.h"
+
+#include <gtest/gtest.h>
+
+using namespace pcskeleton;
+
+TEST(QualityReport, ATorusGivesOneCycleAndNoWarning) {
+    const SkeletonResult result = computeCurveSkeleton(shapes::torus(6000, 1.0, 0.3));
+    const SkeletonQuality& q = result.quality;
+    EXPECT_EQ(q.topology.cycles, 1);
+    EXPECT_EQ(q.topology.tips, 0);
+    EXPECT_EQ(q.stopReason, StopReason::Converged);
+    EXPECT_GT(q.iterations, 0);
+    EXPECT_EQ(q.inputParts, 1);
+    EXPECT_EQ(q.uncontractedPoints, 0u);
+    EXPECT_TRUE(q.warnings().empty()) << describe(q);
+    const std::string text = describe(q);
+    EXPECT_NE(text.find("1 cycle"), std::string::npos) << text;
+    EXPECT_NE(text.find("converged"), std::string::npos) << text;
+    EXPECT_NE(text.find("No warnings."), std::string::npos) << text;
+}
+
+TEST(QualityReport, OutliersAreReported) {
+    const PointList cloud = shapes::withOutliers(shapes::torus(6000, 1.0, 0.3), 0.05, 3);
+    const SkeletonResult result = computeCurveSkeleton(cloud);
+    const std::string text = describe(result.quality);
+    EXPECT_GT(result.quality.uncontractedPoints + result.quality.pointsOfIsolatedNodes, 0u) << text;
+    EXPECT_FALSE(result.quality.warnings().empty()) << text;
+    EXPECT_NE(text.find("Remove outliers"), std::string::npos) << text;
+}
+
+TEST(QualityReport, APartThatCollapsesToAPointIsReported) {
+    // A torus and, far from it, a small ball: the ball contracts to a point, no bone.
+    PointList cloud = shapes::torus(6000, 1.0, 0.3);
+    for (Point p : shapes::sphere(400, 0.15, 5)) cloud.push_back(p + Point(3.0, 0, 0));
+    const SkeletonResult result = computeCurveSkeleton(cloud);
+    EXPECT_EQ(result.quality.inputParts, 2) << describe(result.quality);
+    EXPECT_EQ(result.quality.partsWithoutBone, 1) << describe(result.quality);
+    EXPECT_EQ(result.quality.pointsWithoutBone, 400u) << describe(result.quality);
+}
+
+TEST(QualityReport, IterationLimitIsAWarning) {
+    SkeletonParameters oneIteration;
+    oneIteration.contraction.maxIterations = 1;
+    const SkeletonResult result = computeCurveSkeleton(shapes::torus(3000, 1.0, 0.3), oneIteration);
+    EXPECT_EQ(result.quality.stopReason, StopReason::IterationLimit);
+    const std::vector<std::string> warnings = result.quality.warnings();
+    ASSERT_FALSE(warnings.empty());
+    EXPECT_NE(warnings.front().find("maximum iterations"), std::string::npos) << warnings.front();
+}
+
+TEST(QualityReport, RefinementIsReportedWhenOn) {
+    SkeletonParameters refine;
+    refine.thinning.refine = true;
+    const SkeletonResult result = computeCurveSkeleton(shapes::torus(4000, 1.0, 0.3), refine);
+    EXPECT_TRUE(result.quality.refined);
+    EXPECT_EQ(result.quality.topology.cycles, 1) << "refinement must keep a real loop";
+    EXPECT_NE(describe(result.quality).find("Refinement: removed"), std::string::npos);
+}

@@ -1,0 +1,48 @@
+// Optional refinement on hand-made graphs whose flaws are known, and on a clean ring.
+#include <pcskeleton/analysis/skeleton_refinement.h>
+#include "support/hand_made_graphs.h"
+#include "support/sampled_shapes.h"
+
+#include <gtest/gtest.h>
+
+using namespace pcskeleton;
+using namespace pcskeleton::graphs;
+
+TEST(SkeletonRefinement, RemovesSpursCollapsesFalseLoopsAndMergesCloseJunctions) {
+    SkeletonGraph g = straightChain();
+    g.pointNode = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
+    const int spur = addNode(g, Point(0.2, 0.08, 0), 2);
+    g.pointNode.push_back(spur);
+    const int a = addNode(g, Point(0.5, 0.05, 0), 5);
+    const int b = addNode(g, Point(0.55, 0.05, 0), a);
+    const int c = addNode(g, Point(0.55, 0.0, 0.02), b);
+    g.edges.push_back({5, c});
+    // Two long limbs whose junctions (node 7 and a new node 0.03 away) nearly coincide.
+    const int twin = addNode(g, Point(0.7, 0.03, 0), 7);
+    int up = twin, down = twin;
+    for (int step = 1; step <= 5; ++step) up = addNode(g, Point(0.7, 0.03 + 0.1 * step, 0), up);
+    for (int step = 1; step <= 5; ++step) down = addNode(g, Point(0.7, 0.03, 0.1 * step), down);
+    normalizeEdges(g.edges);
+    ASSERT_EQ(invariantViolation(g), "");
+
+    const RefinementReport report = refineSkeleton(g, kSpacing);
+    EXPECT_EQ(invariantViolation(g), "");
+    EXPECT_EQ(report.spursRemoved, 1) << describe(report);
+    EXPECT_EQ(report.cyclesCollapsed, 1) << describe(report);
+    EXPECT_GE(report.junctionsMerged, 1) << describe(report);
+    const SkeletonTopology t = analyseTopology(g);
+    EXPECT_EQ(t.cycles, 0) << describe(t);
+    EXPECT_EQ(t.tips, 4) << describe(t);  // the chain's two ends and the two limbs
+    EXPECT_EQ(t.junctions, 1) << describe(t);
+    // The spur's point now belongs to the node it sprouted from, which kept its place.
+    const int spurPointNode = g.pointNode.back();
+    ASSERT_GE(spurPointNode, 0);
+    EXPECT_TRUE(g.nodes[spurPointNode].isApprox(Point(0.2, 0, 0)));
+}
+
+TEST(SkeletonRefinement, LeavesACleanSkeletonAlone) {
+    SkeletonGraph ring = shapes::curveSkeleton(shapes::circle(Point::Zero(), 1.0, 24), 0.3);
+    const SkeletonGraph before = ring;
+    EXPECT_FALSE(refineSkeleton(ring, kSpacing).changedAnything());
+    EXPECT_EQ(ring.edges, before.edges);
+}

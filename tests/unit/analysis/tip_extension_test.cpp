@@ -1,0 +1,65 @@
+// Tip extension: a capped tube's skeleton reaches its ends; loops and spurs stay as they are.
+#include <pcskeleton/analysis/tip_extension.h>
+#include <pcskeleton/curve_skeleton.h>
+#include "support/hand_made_graphs.h"
+#include "support/sampled_shapes.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+using namespace pcskeleton;
+using namespace pcskeleton::graphs;
+
+namespace {
+
+// A capped tube along z from 0 to 1 (radius 0.1): the shape ends at z = -0.1 and 1.1.
+struct TipEnds {
+    double low, high;
+};
+
+TipEnds tipEnds(const SkeletonGraph& g) {
+    const std::vector<int> degree = nodeDegrees(g.nodeCount(), g.edges);
+    TipEnds ends{1e9, -1e9};
+    for (std::size_t n = 0; n < g.nodeCount(); ++n) {
+        if (degree[n] != 1) continue;
+        ends.low = std::min(ends.low, g.nodes[n].z());
+        ends.high = std::max(ends.high, g.nodes[n].z());
+    }
+    return ends;
+}
+
+}  // namespace
+
+TEST(TipExtension, ReachesTheEndsOfACappedTube) {
+    const PointList cloud = shapes::cylinder(6000, 0.1, 1.0, /*capped=*/true);
+    SkeletonParameters paper;
+    paper.thinning.extendTips = false;
+    const SkeletonResult short_ = computeCurveSkeleton(cloud, paper);
+    const SkeletonResult extended = computeCurveSkeleton(cloud);
+    ASSERT_EQ(analyseTopology(short_.skeleton).tips, 2);
+    ASSERT_EQ(analyseTopology(extended.skeleton).tips, 2);
+    EXPECT_EQ(extended.quality.tipExtension.extendedTips, 2);
+    EXPECT_EQ(invariantViolation(extended.skeleton), "");
+
+    const TipEnds before = tipEnds(short_.skeleton), after = tipEnds(extended.skeleton);
+    // Contraction leaves the ends inside; extension brings them to the caps' apexes.
+    EXPECT_GT(before.low, -0.1 + 0.03);
+    EXPECT_LT(before.high, 1.1 - 0.03);
+    EXPECT_NEAR(after.low, -0.1, 0.01);
+    EXPECT_NEAR(after.high, 1.1, 0.01);
+    // The new end nodes own no points; the old tips keep theirs.
+    EXPECT_EQ(extended.skeleton.pointNode, short_.skeleton.pointNode);
+}
+
+TEST(TipExtension, LeavesLoopsAndSpursAlone) {
+    SkeletonGraph ring = shapes::curveSkeleton(shapes::circle(Point::Zero(), 1.0, 24), 0.3);
+    EXPECT_EQ(extendTips(ring, {}, kSpacing).extendedTips, 0);
+    SkeletonGraph g = straightChain();
+    const int spur = addNode(g, Point(0.5, 0.1, 0), 5);
+    PointList points{Point(0.5, 0.5, 0)};  // far along the spur
+    g.pointNode = {spur};
+    const std::size_t nodes = g.nodeCount();
+    extendTips(g, points, kSpacing);
+    EXPECT_EQ(g.nodeCount(), nodes) << "a spur (or an end without points) is not extended";
+}

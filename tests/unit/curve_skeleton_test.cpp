@@ -1,0 +1,185 @@
+// Known-answer tests of the whole pipeline (contraction, thinning, embedding, tip
+// extension) on tubes along known curves.
+#include <pcskeleton/curve_skeleton.h>
+#include "support/sampled_shapes.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace pcskeleton;
+using shapes::Polyline;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+SkeletonTopology topologyOf(const PointList& cloud, const SkeletonParameters& parameters = {}) {
+    const SkeletonResult result = computeCurveSkeleton(cloud, parameters);
+    return analyseTopology(result.skeleton);
+}
+
+double diagonalOf(const PointList& points) {
+    Point low = points.front(), high = points.front();
+    for (const Point& p : points) low = low.cwiseMin(p), high = high.cwiseMax(p);
+    return (high - low).norm();
+}
+
+Polyline yShape(double armLength) {
+    Polyline arms;
+    for (int i = 0; i < 3; ++i) {
+        const double angle = 2 * kPi * i / 3 + kPi / 2;
+        arms.push_back({Point::Zero(), armLength * Point(std::cos(angle), std::sin(angle), 0)});
+    }
+    return arms;
+}
+
+// Two rings touching at the origin: a figure eight, genus 2.
+Polyline figureEight(double ringRadius) {
+    Polyline curve = shapes::circle(Point(-ringRadius, 0, 0), ringRadius);
+    const Polyline right = shapes::circle(Point(ringRadius, 0, 0), ringRadius);
+    // Rotate the right ring by half a side so that neither ring has a corner at the origin twice.
+    curve.insert(curve.end(), right.begin(), right.end());
+    return curve;
+}
+
+}  // namespace
+
+TEST(CurveSkeleton, TorusHasExactlyOneCycle) {
+    const SkeletonTopology t = topologyOf(shapes::torus(6000, 1.0, 0.25));
+    EXPECT_EQ(t.cycles, 1) << describe(t);
+    EXPECT_EQ(t.components, 1) << describe(t);
+    EXPECT_EQ(t.tips, 0) << describe(t);
+}
+
+TEST(CurveSkeleton, GenusTwoShapeHasTwoCycles) {
+    const SkeletonTopology t = topologyOf(shapes::tube(figureEight(1.0), 0.22, 10000));
+    EXPECT_EQ(t.cycles, 2) << describe(t);
+    EXPECT_EQ(t.components, 1) << describe(t);
+}
+
+TEST(CurveSkeleton, SphereHasNoCycle) {
+    const SkeletonTopology t = topologyOf(shapes::sphere(4000, 1.0));
+    EXPECT_EQ(t.cycles, 0) << describe(t);
+    EXPECT_EQ(t.components, 1) << describe(t);
+}
+
+TEST(CurveSkeleton, YShapedTubeHasThreeTipsAndOneJunction) {
+    const SkeletonTopology t = topologyOf(shapes::tube(yShape(1.0), 0.12, 8000));
+    EXPECT_EQ(t.tips, 3) << describe(t);
+    EXPECT_EQ(t.junctions, 1) << describe(t);
+    EXPECT_EQ(t.cycles, 0) << describe(t);
+}
+
+TEST(CurveSkeleton, StraightTubeGivesAPathAlongItsAxis) {
+    const PointList cloud = shapes::cylinder(5000, 0.1, 1.0, /*capped=*/true);
+    const SkeletonResult result = computeCurveSkeleton(cloud);
+    const SkeletonTopology t = analyseTopology(result.skeleton);
+    EXPECT_EQ(t.components, 1) << describe(t);
+    EXPECT_EQ(t.cycles, 0) << describe(t);
+    EXPECT_EQ(t.tips, 2) << describe(t);
+    EXPECT_EQ(t.junctions, 0) << describe(t);
+    const double tolerance = 0.02 * diagonalOf(cloud);
+    for (const Point& node : result.skeleton.nodes) {
+        // On the axis line, and inside the capsule lengthwise (tip nodes sit in the caps).
+        EXPECT_LT(std::hypot(node.x(), node.y()), tolerance) << node.transpose();
+        EXPECT_GT(node.z(), -0.1);
+        EXPECT_LT(node.z(), 1.1);
+    }
+    // The path covers most of the axis, not one clump.
+    double lowest = 1, highest = 0;
+    for (const Point& node : result.skeleton.nodes) lowest = std::min(lowest, node.z()), highest = std::max(highest, node.z());
+    EXPECT_GT(highest - lowest, 0.7);
+}
+
+TEST(CurveSkeleton, NonUniformTubeKeepsItsTopology) {
+    // Half of the points in 10% of the length.
+    const Polyline axis = {{Point(0, 0, 0), Point(0, 0, 1)}};
+    PointList cloud = shapes::tube({{Point(0, 0, 0), Point(0, 0, 0.1)}}, 0.1, 2500, 7);
+    const PointList rest = shapes::tube({{Point(0, 0, 0.1), Point(0, 0, 1)}}, 0.1, 2500, 8);
+    for (const Point& p : rest) {
+        if (p.z() > 0.1) cloud.push_back(p);  // the dense part's cap stays, the sparse one's inside is dropped
+    }
+    PointList kept;
+    for (const Point& p : cloud) {
+        if (shapes::distanceToCurve(p, axis) >= 0.1 * (1 - 1e-6)) kept.push_back(p);
+    }
+    const SkeletonTopology t = topologyOf(kept);
+    EXPECT_EQ(t.components, 1) << describe(t);
+    EXPECT_EQ(t.cycles, 0) << describe(t);
+    EXPECT_EQ(t.tips, 2) << describe(t);
+    EXPECT_EQ(t.junctions, 0) << describe(t);
+}
+
+TEST(CurveSkeleton, CorrespondenceAndRadiiDescribeTheTube) {
+    const PointList cloud = shapes::cylinder(5000, 0.1, 1.0, /*capped=*/false);
+    SkeletonParameters paperSteps;
+    paperSteps.thinning.extendTips = false;  // its end nodes own no points (TipExtension tests them)
+    const SkeletonResult result = computeCurveSkeleton(cloud, paperSteps);
+    const SkeletonGraph& s = result.skeleton;
+    ASSERT_EQ(s.pointNode.size(), cloud.size());
+    ASSERT_EQ(s.radii.size(), s.nodes.size());
+    std::vector<int> members(s.nodes.size(), 0);
+    for (int node : s.pointNode) {
+        ASSERT_GE(node, 0);
+        ASSERT_LT(node, int(s.nodes.size()));
+        ++members[node];
+    }
+    for (std::size_t n = 0; n < s.nodes.size(); ++n) {
+        EXPECT_GT(members[n], 0) << "node " << n << " stands for no point";
+        // Away from the open ends the radius is the tube's.
+        if (s.nodes[n].z() > 0.2 && s.nodes[n].z() < 0.8) EXPECT_NEAR(s.radii[n], 0.1, 0.01);
+    }
+    // Every point belongs to a node near it along the axis.
+    for (std::size_t i = 0; i < cloud.size(); i += 50) {
+        EXPECT_LT(std::abs(cloud[i].z() - s.nodes[s.pointNode[i]].z()), 0.1) << "point " << i;
+    }
+}
+
+// An outlier far from the torus becomes a node owning one point: its radius (a distance
+// to itself, 0) is taken from its neighbours, so every skeleton can be edited as it comes.
+TEST(CurveSkeleton, EveryNodeHasAPositiveRadiusEvenWithOutliers) {
+    PointList cloud = shapes::torus(3000, 1.0, 0.3);
+    cloud.emplace_back(0, 0, 1.5);
+    cloud.emplace_back(2.5, 0, 0.8);
+    const SkeletonResult result = computeCurveSkeleton(cloud);
+    EXPECT_EQ(invariantViolation(result.skeleton), "");
+    for (double r : result.skeleton.radii) EXPECT_GT(r, 0.0);
+}
+
+TEST(CurveSkeleton, TwoStagesEqualOneCall) {
+    const PointList cloud = shapes::torus(3000, 1.0, 0.3);
+    const SkeletonResult oneCall = computeCurveSkeleton(cloud);
+    const SkeletonGraph fromContracted =
+        skeletonFromContractedPoints(cloud, oneCall.contraction.contracted, 0, ThinningParameters()).skeleton;
+    EXPECT_EQ(fromContracted.edges, oneCall.skeleton.edges);
+    EXPECT_EQ(fromContracted.pointNode, oneCall.skeleton.pointNode);
+}
+
+TEST(CurveSkeleton, ScaleDoesNotChangeTheGraph) {
+    const PointList cloud = shapes::tube(yShape(1.0), 0.12, 4000);
+    PointList scaled;
+    for (const Point& p : cloud) scaled.push_back(p * 1e4 + Point(5e5, 0, 0));
+    const SkeletonResult a = computeCurveSkeleton(cloud), b = computeCurveSkeleton(scaled);
+    EXPECT_EQ(a.skeleton.edges, b.skeleton.edges);
+    ASSERT_EQ(a.skeleton.radii.size(), b.skeleton.radii.size());
+    for (std::size_t n = 0; n < a.skeleton.radii.size(); ++n) {
+        EXPECT_NEAR(b.skeleton.radii[n], 1e4 * a.skeleton.radii[n], 1e-6 * b.skeleton.radii[n]);
+    }
+}
+
+TEST(CurveSkeleton, SamplingRadiusMustBeAFraction) {
+    SkeletonParameters p;
+    p.thinning.sampleRadius = 0;
+    EXPECT_THROW(computeCurveSkeleton(shapes::sphere(500, 1.0), p), InvalidInput);
+    p.thinning.sampleRadius = 1.5;
+    EXPECT_THROW(computeCurveSkeleton(shapes::sphere(500, 1.0), p), InvalidInput);
+}
+
+TEST(CurveSkeleton, ContractedPointsMustMatchTheInput) {
+    const PointList cloud = shapes::sphere(500, 1.0);
+    EXPECT_THROW(skeletonFromContractedPoints(cloud, PointList(10, Point::Zero()), 0, {}), InvalidInput);
+    PointList withNaN = cloud;
+    withNaN[3].x() = std::nan("");
+    EXPECT_THROW(skeletonFromContractedPoints(cloud, withNaN, 0, {}), InvalidInput);
+}

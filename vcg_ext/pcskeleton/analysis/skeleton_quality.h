@@ -1,0 +1,63 @@
+// The quality report of a skeleton run: what was computed, whether contraction did its
+// job, and the failure modes a user should know about before trusting the result.
+//
+// Checks (each one names the parameter that usually fixes it, see describe()):
+// - points that did not contract: their contracted position is farther from the skeleton
+//   than the radius there (outliers, or parts too flat or thick for the iterations given);
+// - parts of the input (connected through the 1-rings) whose nodes have no bone: they
+//   collapsed to a point and gave no skeleton; and isolated nodes in general (outliers);
+// - nodes outside the shape: all of a node's points lie on one side of it (the mean of
+//   the unit vectors towards them is longer than 0.8), as when the centre of a bent part's
+//   points falls outside the part;
+// - spurs and spurious cycles (criteria in skeleton_structure.h).
+#pragma once
+
+#include "pcskeleton/contraction/laplacian_contraction.h"
+#include "pcskeleton/skeleton/skeleton_graph.h"
+#include "pcskeleton/analysis/skeleton_refinement.h"
+#include "pcskeleton/analysis/tip_extension.h"
+
+#include <string>
+#include <vector>
+
+namespace pcskeleton {
+
+struct SkeletonQuality {
+    SkeletonTopology topology;
+    double nodeSpacing = 0.0;  // the thinning radius, input units
+
+    // Contraction; stopReason NotStopped means it is unknown (thinned from a saved layer).
+    StopReason stopReason = StopReason::NotStopped;
+    int iterations = 0;
+    double extentRatio = 1.0;  // mean 1-ring size at the end, relative to the start
+
+    std::size_t points = 0;
+    std::size_t uncontractedPoints = 0;
+    int inputParts = 0;             // connected parts of the input through the 1-rings
+    int partsWithoutBone = 0;       // of which gave no bone
+    std::size_t pointsWithoutBone = 0;
+    std::size_t pointsOfIsolatedNodes = 0;  // points owned by nodes without a bone
+    std::vector<int> nodesOutside;  // nodes with all their points on one side
+    std::vector<std::vector<int>> spurs;           // node paths, tip first
+    std::vector<std::vector<int>> spuriousCycles;  // node cycles
+
+    bool refined = false;
+    RefinementReport refinement;
+    bool tipsExtended = false;
+    TipExtensionReport tipExtension;
+
+    // One sentence per problem found, each saying what to change; empty when none.
+    std::vector<std::string> warnings() const;
+};
+
+// Multi-line report: the skeleton's numbers, the contraction, the post-processing, then
+// the warnings (or "no warnings").
+std::string describe(const SkeletonQuality& quality);
+
+// The checks on `skeleton` (input frame), computed from the contraction's own data:
+// `cloud` and its `rings`, and `contracted`, the contracted distinct points in the
+// normalised frame. Fills everything but the contraction and post-processing fields.
+SkeletonQuality assessSkeleton(const SkeletonGraph& skeleton, const NormalizedCloud& cloud, const OneRings& rings,
+                               const PointList& contracted, double nodeSpacing);
+
+}  // namespace pcskeleton

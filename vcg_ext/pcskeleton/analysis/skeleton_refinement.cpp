@@ -1,0 +1,107 @@
+#include "pcskeleton/analysis/skeleton_refinement.h"
+
+#include "pcskeleton/internal/disjoint_sets.h"
+#include "pcskeleton/skeleton/skeleton_structure.h"
+
+#include <sstream>
+
+namespace pcskeleton {
+
+namespace {
+
+constexpr int kMaxPasses = 10;
+
+// Merges each group of nodes into one; groups sharing a node merge together. The merged
+// node takes the position and radius of the group's `keep` node when it has one, else the
+// centroid and mean radius of its nodes. Nodes in no group stay as they are.
+struct NodeGroup {
+    std::vector<int> nodes;
+    int keep = -1;
+};
+
+void mergeGroups(SkeletonGraph& skeleton, const std::vector<NodeGroup>& groups) {
+    const std::size_t nodeCount = skeleton.nodeCount();
+    DisjointSets sets(nodeCount);
+    for (const NodeGroup& group : groups) {
+        for (int n : group.nodes) sets.unite(group.nodes.front(), n);
+    }
+    std::vector<int> kept(nodeCount, -1);
+    for (const NodeGroup& group : groups) {
+        if (group.keep >= 0) kept[sets.find(group.keep)] = group.keep;
+    }
+    std::vector<Point> positionSum(nodeCount, Point::Zero());
+    std::vector<double> radiusSum(nodeCount, 0.0);
+    std::vector<int> members(nodeCount, 0);
+    for (std::size_t n = 0; n < nodeCount; ++n) {
+        const int root = sets.find(int(n));
+        positionSum[root] += skeleton.nodes[n], radiusSum[root] += skeleton.radii[n], ++members[root];
+    }
+    SkeletonGraph merged;
+    std::vector<int> newIndex(nodeCount, -1);
+    for (std::size_t n = 0; n < nodeCount; ++n) {
+        const int root = sets.find(int(n));
+        if (newIndex[root] < 0) {
+            newIndex[root] = int(merged.nodes.size());
+            const int keep = kept[root];
+            merged.nodes.push_back(keep >= 0 ? skeleton.nodes[keep] : Point(positionSum[root] / members[root]));
+            merged.radii.push_back(keep >= 0 ? skeleton.radii[keep] : radiusSum[root] / members[root]);
+        }
+        newIndex[n] = newIndex[root];
+    }
+    for (const Edge& e : skeleton.edges) merged.edges.push_back({newIndex[e[0]], newIndex[e[1]]});
+    normalizeEdges(merged.edges);
+    merged.pointNode.reserve(skeleton.pointNode.size());
+    for (int node : skeleton.pointNode) merged.pointNode.push_back(node < 0 ? -1 : newIndex[node]);
+    skeleton = std::move(merged);
+}
+
+int removeSpurs(SkeletonGraph& skeleton, double nodeSpacing) {
+    std::vector<NodeGroup> groups;
+    for (const Limb& limb : tipLimbs(skeleton)) {
+        if (isSpur(skeleton, limb, nodeSpacing)) groups.push_back({limb.path, limb.path.back()});
+    }
+    mergeGroups(skeleton, groups);
+    return int(groups.size());
+}
+
+int collapseSpuriousCycles(SkeletonGraph& skeleton, double nodeSpacing) {
+    std::vector<NodeGroup> groups;
+    for (std::vector<int>& cycle : shortCycleBasis(skeleton)) {
+        if (isSpuriousCycle(skeleton, cycle, nodeSpacing)) groups.push_back({std::move(cycle), -1});
+    }
+    mergeGroups(skeleton, groups);
+    return int(groups.size());
+}
+
+int mergeCloseJunctions(SkeletonGraph& skeleton, double nodeSpacing) {
+    std::vector<NodeGroup> groups;
+    for (std::vector<int>& path : closeJunctionPaths(skeleton, nodeSpacing)) groups.push_back({std::move(path), -1});
+    mergeGroups(skeleton, groups);
+    return int(groups.size());
+}
+
+}  // namespace
+
+std::string describe(const RefinementReport& r) {
+    std::ostringstream s;
+    s << "removed " << r.spursRemoved << (r.spursRemoved == 1 ? " spur, " : " spurs, ") << "collapsed "
+      << r.cyclesCollapsed << (r.cyclesCollapsed == 1 ? " small loop, " : " small loops, ") << "merged "
+      << r.junctionsMerged << (r.junctionsMerged == 1 ? " pair" : " pairs") << " of close junctions";
+    return s.str();
+}
+
+RefinementReport refineSkeleton(SkeletonGraph& skeleton, double nodeSpacing) {
+    RefinementReport report;
+    for (int pass = 0; pass < kMaxPasses; ++pass) {
+        const int spurs = removeSpurs(skeleton, nodeSpacing);
+        const int cycles = collapseSpuriousCycles(skeleton, nodeSpacing);
+        const int junctions = mergeCloseJunctions(skeleton, nodeSpacing);
+        report.spursRemoved += spurs;
+        report.cyclesCollapsed += cycles;
+        report.junctionsMerged += junctions;
+        if (spurs + cycles + junctions == 0) break;
+    }
+    return report;
+}
+
+}  // namespace pcskeleton

@@ -1,0 +1,184 @@
+#include "pcskeleton/contraction/laplacian_contraction.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numeric>
+
+namespace pcskeleton {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Positions this far out (in normalised units, where the cloud spans 1.6) mean the
+// solve diverged: a contraction only ever moves points inwards.
+constexpr double kDivergenceRadius = 100.0;
+
+bool diverged(const PointList& points) {
+    return std::any_of(points.begin(), points.end(), [](const Point& p) {
+        return !p.allFinite() || p.lpNorm<Eigen::Infinity>() > kDivergenceRadius;
+    });
+}
+
+void checkParameters(const ContractionParameters& p) {
+    auto require = [](bool ok, const char* message) {
+        if (!ok) throw InvalidInput(message);
+    };
+    require(p.neighbourCount == 0 || p.neighbourCount >= 4, "k must be 0 (automatic) or at least 4.");
+    require(p.initialContractionWeight >= 0, "The initial contraction weight W_L0 must be >= 0 (0 = automatic).");
+    require(p.initialAttractionWeight > 0, "The initial attraction weight W_H0 must be positive.");
+    require(p.contractionScale >= 1, "The contraction scale s_L must be at least 1.");
+    require(p.maxContractionWeight > 0 && p.maxAttractionWeight > 0, "Weight limits must be positive.");
+    require(p.laplacianRowLimit > 0, "The Laplacian row limit must be positive.");
+    require(p.maxIterations >= 1, "The iteration limit must be at least 1.");
+    require(p.terminationThreshold >= 0, "The termination threshold must be >= 0.");
+}
+
+int chooseNeighbourCount(const ContractionParameters& p, std::size_t inputSize) {
+    return p.neighbourCount > 0 ? p.neighbourCount : defaultNeighbourCount(inputSize);
+}
+
+}  // namespace
+
+std::string describe(StopReason reason) {
+    switch (reason) {
+        case StopReason::NotStopped: return "not finished";
+        case StopReason::Converged: return "converged (1-ring extents stopped shrinking)";
+        case StopReason::IterationLimit: return "iteration limit reached";
+        case StopReason::NumericalFailure: return "numerical failure (kept the last good positions)";
+    }
+    return "unknown";
+}
+
+LaplacianContraction::LaplacianContraction(const PointList& input, const ContractionParameters& parameters,
+                                           const ProgressCallback& progress)
+    : parameters_(parameters), solver_(parameters.solver) {
+    checkParameters(parameters_);
+    const int k = chooseNeighbourCount(parameters_, input.size());
+    cloud_ = normalizeCloud(input, static_cast<std::size_t>(k) + 1);
+
+    const auto start = Clock::now();
+    rings_ = OneRings::compute(cloud_.points, k, progress);
+    neighbourhoodSeconds_ = secondsSince(start);
+
+    positions_ = cloud_.points;
+    laplacian_ = std::make_unique<CotangentLaplacian>(rings_, parameters_.laplacianRowLimit);
+    initialExtents_ = ringExtents(rings_, positions_);
+    initialExtentSum_ = std::accumulate(initialExtents_.begin(), initialExtents_.end(), 0.0);
+    if (!(initialExtentSum_ > 0)) throw InvalidInput("The points have no usable neighbourhoods.");
+
+    const double meanExtent = initialExtentSum_ / static_cast<double>(initialExtents_.size());
+    initialContractionWeight_ = parameters_.initialContractionWeight > 0 ? parameters_.initialContractionWeight
+                                                                         : 1.0 / (5.0 * meanExtent);
+    contractionWeight_ = initialContractionWeight_;
+    attractionWeights_.assign(positions_.size(), parameters_.initialAttractionWeight);
+}
+
+LaplacianContraction::~LaplacianContraction() = default;
+
+bool LaplacianContraction::solve(double contractionWeight, PointList& next) {
+    laplacian_->update(positions_);
+    const auto& L = laplacian_->matrix();
+    SparseSpdSolver::Matrix system = L.transpose() * L;
+    system *= contractionWeight * contractionWeight;
+
+    const Eigen::Index n = static_cast<Eigen::Index>(positions_.size());
+    Eigen::MatrixXd rhs(n, 3);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        const double w2 = attractionWeights_[i] * attractionWeights_[i];
+        system.coeffRef(i, i) += w2;  // the diagonal is always in L^T L's pattern
+        rhs.row(i) = w2 * positions_[i].transpose();
+    }
+    if (!solver_.factorize(system)) return false;
+    const Eigen::MatrixXd solution = solver_.solve(rhs);
+    next.resize(positions_.size());
+    for (Eigen::Index i = 0; i < n; ++i) next[i] = solution.row(i).transpose();
+    return !diverged(next);
+}
+
+void LaplacianContraction::updateWeights(const std::vector<double>& extents) {
+    for (std::size_t i = 0; i < extents.size(); ++i) {
+        double w = parameters_.initialAttractionWeight;
+        if (initialExtents_[i] > 0) {
+            w = extents[i] > 0 ? w * initialExtents_[i] / extents[i] : parameters_.maxAttractionWeight;
+        }
+        attractionWeights_[i] = std::min(w, parameters_.maxAttractionWeight);
+    }
+    contractionWeight_ = std::min(contractionWeight_ * parameters_.contractionScale, parameters_.maxContractionWeight);
+}
+
+IterationReport LaplacianContraction::iterate() {
+    if (finished()) return history_.back();
+    const auto start = Clock::now();
+    IterationReport report;
+    report.iteration = static_cast<int>(history_.size()) + 1;
+    report.contractionWeight = contractionWeight_;
+    const double previousRatio = history_.empty() ? 1.0 : history_.back().extentRatio;
+
+    PointList next;
+    if (!solve(contractionWeight_, next)) {
+        stopReason_ = StopReason::NumericalFailure;
+        report.extentRatio = previousRatio;
+        report.seconds = secondsSince(start);
+        history_.push_back(report);
+        return report;
+    }
+    positions_.swap(next);
+
+    const std::vector<double> extents = ringExtents(rings_, positions_);
+    report.extentRatio = std::accumulate(extents.begin(), extents.end(), 0.0) / initialExtentSum_;
+    updateWeights(extents);
+
+    // Converged means the rings shrank and then stopped shrinking. Iterations before the
+    // contraction starts do not count: on dense clouds the cotangent Laplacian's coordinates
+    // shrink with the square of the spacing while W_L0 = 1/(5 S0) grows only with its
+    // inverse, so the first iterations can barely move until W_L has grown.
+    const double shrinkage = previousRatio - report.extentRatio;
+    if (contractionStarted_ && shrinkage < parameters_.terminationThreshold) {
+        stopReason_ = StopReason::Converged;
+    } else if (report.iteration >= parameters_.maxIterations) {
+        stopReason_ = StopReason::IterationLimit;
+    }
+    contractionStarted_ = contractionStarted_ || shrinkage >= parameters_.terminationThreshold;
+    report.seconds = secondsSince(start);
+    history_.push_back(report);
+    return report;
+}
+
+PointList LaplacianContraction::contractedPoints() const {
+    PointList result(cloud_.inputSize());
+    for (std::size_t i = 0; i < result.size(); ++i) result[i] = cloud_.toInputFrame(positions_[cloud_.uniqueIndex[i]]);
+    return result;
+}
+
+void LaplacianContraction::iterateToEnd(const ProgressCallback& progress) {
+    while (!finished()) {
+        const IterationReport r = iterate();
+        report(progress, std::min(100, 100 * r.iteration / parameters_.maxIterations), "Contracting");
+    }
+}
+
+ContractionResult LaplacianContraction::result() const {
+    ContractionResult result;
+    result.contracted = contractedPoints();
+    result.iterations = history_;
+    result.stopReason = stopReason_;
+    result.neighbourCount = neighbourCount();
+    result.initialContractionWeight = initialContractionWeight_;
+    result.neighbourhoodSeconds = neighbourhoodSeconds_;
+    return result;
+}
+
+ContractionResult LaplacianContraction::run(const PointList& input, const ContractionParameters& parameters,
+                                            const ProgressCallback& progress) {
+    LaplacianContraction contraction(input, parameters, progressRange(progress, 0, 30));
+    contraction.iterateToEnd(progressRange(progress, 30, 100));
+    return contraction.result();
+}
+
+}  // namespace pcskeleton

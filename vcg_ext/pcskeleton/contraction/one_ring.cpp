@@ -1,0 +1,216 @@
+#include "pcskeleton/contraction/one_ring.h"
+
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Search_traits_adapter.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include <CGAL/property_map.h>
+#include <boost/iterator/counting_iterator.hpp>
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+namespace pcskeleton {
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point3 = Kernel::Point_3;
+using Point2 = Kernel::Point_2;
+
+using PointMap = CGAL::Pointer_property_map<Point3>::type;
+using SearchTraits = CGAL::Search_traits_adapter<std::size_t, PointMap, CGAL::Search_traits_3<Kernel>>;
+using NeighbourSearch = CGAL::Orthogonal_k_neighbor_search<SearchTraits>;
+using KdTree = NeighbourSearch::Tree;
+
+using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<int, Kernel>;
+using DataStructure = CGAL::Triangulation_data_structure_2<VertexBase>;
+using Delaunay2 = CGAL::Delaunay_triangulation_2<Kernel, DataStructure>;
+
+struct LocalFan {
+    std::vector<OneRings::FanTriangle> triangles;
+    std::vector<int> ring;
+};
+
+// Everything one thread needs to build fans, reused from point to point.
+class FanBuilder {
+public:
+    FanBuilder(const PointList& points, const KdTree& tree, const PointMap& pointMap, int k)
+        : points_(points), tree_(tree), distance_(pointMap), k_(k) {}
+
+    void build(int i, LocalFan& fan) {
+        fan.triangles.clear();
+        fan.ring.clear();
+        gatherNeighbours(i);
+        projectOnTangentPlane(i);
+        triangulate(i, fan);
+        std::sort(fan.ring.begin(), fan.ring.end());
+        fan.ring.erase(std::unique(fan.ring.begin(), fan.ring.end()), fan.ring.end());
+    }
+
+private:
+    void gatherNeighbours(int i) {
+        neighbours_.clear();
+        const Point& p = points_[i];
+        // k + 1 because the query point finds itself.
+        NeighbourSearch search(tree_, Point3(p.x(), p.y(), p.z()), k_ + 1, 0, true, distance_);
+        for (const auto& hit : search) {
+            if (static_cast<int>(hit.first) != i) neighbours_.push_back(static_cast<int>(hit.first));
+        }
+    }
+
+    void projectOnTangentPlane(int i) {
+        Point mean = points_[i];
+        for (int j : neighbours_) mean += points_[j];
+        mean /= static_cast<double>(neighbours_.size() + 1);
+        Eigen::Matrix3d covariance = (points_[i] - mean) * (points_[i] - mean).transpose();
+        for (int j : neighbours_) covariance += (points_[j] - mean) * (points_[j] - mean).transpose();
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
+        eigen.computeDirect(covariance);
+        // Eigenvalues ascend: the two largest span the tangent plane.
+        const Eigen::Vector3d u = eigen.eigenvectors().col(2);
+        const Eigen::Vector3d v = eigen.eigenvectors().col(1);
+        projected_.clear();
+        for (int j : neighbours_) {
+            const Point d = points_[j] - points_[i];
+            projected_.emplace_back(Point2(d.dot(u), d.dot(v)), j);
+        }
+    }
+
+    void triangulate(int i, LocalFan& fan) {
+        triangulation_.clear();
+        Delaunay2::Vertex_handle centre = triangulation_.insert(Point2(0, 0));
+        triangulation_.insert(projected_.begin(), projected_.end());
+        // A neighbour projecting onto the centre's spot is merged into it by CGAL (and may
+        // overwrite its info): it drops out of the ring, carrying no tangential information.
+        centre->info() = i;
+
+        if (triangulation_.dimension() == 2) {
+            Delaunay2::Face_circulator face = triangulation_.incident_faces(centre), end = face;
+            do {
+                if (!triangulation_.is_infinite(face)) {
+                    int c = face->index(centre);
+                    int a = face->vertex(Delaunay2::ccw(c))->info();
+                    int b = face->vertex(Delaunay2::cw(c))->info();
+                    fan.triangles.push_back({a, b});
+                    fan.ring.push_back(a);
+                    fan.ring.push_back(b);
+                }
+            } while (++face != end);
+        } else if (triangulation_.dimension() == 1) {
+            // Collinear neighbourhood: no triangle, hence no Laplacian weight, but the
+            // two neighbours along the line still measure the extent.
+            Delaunay2::Vertex_circulator vertex = triangulation_.incident_vertices(centre), end = vertex;
+            if (vertex != nullptr) {
+                do {
+                    if (!triangulation_.is_infinite(vertex)) fan.ring.push_back(vertex->info());
+                } while (++vertex != end);
+            }
+        }
+    }
+
+    const PointList& points_;
+    const KdTree& tree_;
+    NeighbourSearch::Distance distance_;
+    int k_;
+    std::vector<int> neighbours_;
+    std::vector<std::pair<Point2, int>> projected_;
+    Delaunay2 triangulation_;
+};
+
+}  // namespace
+
+int defaultNeighbourCount(std::size_t pointCount) {
+    long k = std::lround(0.012 * static_cast<double>(pointCount));
+    return static_cast<int>(std::clamp<long>(k, 8, 30));
+}
+
+OneRings OneRings::compute(const PointList& points, int k, const ProgressCallback& progress) {
+    const std::size_t n = points.size();
+    OneRings rings;
+    rings.k_ = std::min<int>(k, static_cast<int>(n) - 1);
+
+    std::vector<Point3> cgalPoints;
+    cgalPoints.reserve(n);
+    for (const Point& p : points) cgalPoints.emplace_back(p.x(), p.y(), p.z());
+    PointMap pointMap(cgalPoints.data());
+    KdTree tree(boost::counting_iterator<std::size_t>(0), boost::counting_iterator<std::size_t>(n),
+                KdTree::Splitter(), SearchTraits(pointMap));
+    tree.build();  // before the parallel queries: the tree builds lazily otherwise
+    report(progress, 10, "Neighbourhoods: k-d tree built");
+
+    // Each thread handles a contiguous block of points, so concatenating the threads'
+    // outputs in order gives the fans in point order.
+    std::vector<std::vector<OneRings::FanTriangle>> blockTriangles;
+    std::vector<std::vector<int>> blockRings;
+    std::vector<std::size_t> fanCount(n), ringCount(n);
+#pragma omp parallel
+    {
+        int threads = 1, thread = 0;
+#ifdef _OPENMP
+        threads = omp_get_num_threads();
+        thread = omp_get_thread_num();
+#endif
+#pragma omp single
+        {
+            blockTriangles.resize(threads);
+            blockRings.resize(threads);
+        }
+        const std::size_t begin = n * thread / threads, end = n * (thread + 1) / threads;
+        FanBuilder builder(points, tree, pointMap, rings.k_);
+        LocalFan fan;
+        for (std::size_t i = begin; i < end; ++i) {
+            builder.build(static_cast<int>(i), fan);
+            fanCount[i] = fan.triangles.size();
+            ringCount[i] = fan.ring.size();
+            blockTriangles[thread].insert(blockTriangles[thread].end(), fan.triangles.begin(), fan.triangles.end());
+            blockRings[thread].insert(blockRings[thread].end(), fan.ring.begin(), fan.ring.end());
+            if (thread == 0 && (i - begin) % 4096 == 0) {
+                report(progress, 10 + static_cast<int>(90 * (i - begin) / std::max<std::size_t>(1, end - begin)),
+                       "Neighbourhoods: tangent-plane Delaunay 1-rings");
+            }
+        }
+    }
+
+    rings.fanOffsets_.assign(n + 1, 0);
+    rings.ringOffsets_.assign(n + 1, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        rings.fanOffsets_[i + 1] = rings.fanOffsets_[i] + fanCount[i];
+        rings.ringOffsets_[i + 1] = rings.ringOffsets_[i] + ringCount[i];
+    }
+    rings.fanTriangles_.reserve(rings.fanOffsets_[n]);
+    rings.ring_.reserve(rings.ringOffsets_[n]);
+    for (std::size_t t = 0; t < blockTriangles.size(); ++t) {
+        rings.fanTriangles_.insert(rings.fanTriangles_.end(), blockTriangles[t].begin(), blockTriangles[t].end());
+        rings.ring_.insert(rings.ring_.end(), blockRings[t].begin(), blockRings[t].end());
+        std::vector<OneRings::FanTriangle>().swap(blockTriangles[t]);
+        std::vector<int>().swap(blockRings[t]);
+    }
+    report(progress, 100, "Neighbourhoods: done");
+    return rings;
+}
+
+std::vector<double> ringExtents(const OneRings& rings, const PointList& positions) {
+    const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(rings.size());
+    std::vector<double> extents(n, 0.0);
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t i = 0; i < n; ++i) {
+        std::size_t count = rings.ringSize(i);
+        if (count == 0) continue;
+        double sum = 0;
+        for (const int* j = rings.ringBegin(i); j != rings.ringEnd(i); ++j) sum += (positions[*j] - positions[i]).norm();
+        extents[i] = sum / static_cast<double>(count);
+    }
+    return extents;
+}
+
+}  // namespace pcskeleton

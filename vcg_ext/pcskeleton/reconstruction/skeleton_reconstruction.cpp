@@ -1,0 +1,305 @@
+#include "pcskeleton/reconstruction/skeleton_reconstruction.h"
+
+#include "pcskeleton/reconstruction/field_fitting.h"
+#include "pcskeleton/skeleton/skeleton_distance.h"
+
+#include <Eigen/Geometry>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace pcskeleton {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+constexpr int kPaperResolution = 64;          // the paper's grid: 2^6 cells on the longest side
+constexpr int kDistanceResolution = 64;       // distances to the skeleton are computed exactly up to here
+constexpr double kSkeletonSampleSpacing = 0.25;      // along bones: four samples per paper cell
+constexpr double kMarginShare = 0.05;          // empty space around the data, share of the longest side
+
+// The frame of the paper's grid: positions scaled so that the grid's longest side is 64,
+// i.e. lengths are counted in the cells of the paper's 2^6 grid, whatever our resolution.
+struct Frame {
+    Point origin;  // input position of grid node (0, 0, 0)
+    double scale;  // frame = (input - origin) * scale
+    Point toFrame(const Point& p) const { return (p - origin) * scale; }
+    Point toInput(const Point& p) const { return p / scale + origin; }
+};
+
+void checkInputs(const PointList& points, const SkeletonGraph& skeleton) {
+    if (points.empty()) throw InvalidInput("The point layer is empty: reconstruction needs the surface samples.");
+    rejectNonFinite(points, "points", "Remove them (e.g. Filters > Cleaning and Repairing) and try again.");
+    if (skeleton.nodes.empty())
+        throw InvalidInput("The skeleton has no nodes. Compute one first (Filters > Point Set > Compute Curve Skeleton).");
+    rejectNonFinite(skeleton.nodes, "skeleton nodes", "Fix or remove them in Edit Skeleton.");
+    if (skeleton.radii.size() != skeleton.nodes.size())
+        throw InvalidInput("The skeleton layer has no radius per node; compute the skeleton with this plugin.");
+    int missing = 0, first = -1;
+    for (std::size_t n = 0; n < skeleton.radii.size(); ++n)
+        if (!isPositiveFinite(skeleton.radii[n]) && missing++ == 0) first = int(n);
+    if (missing > 0)
+        throw InvalidInput(std::to_string(missing) + " of " + std::to_string(skeleton.nodeCount()) +
+                           " skeleton nodes have no radius (zero, negative or not a number; first: node " +
+                           std::to_string(first) +
+                           "). The radius is the field's depth inside the shape: set it with Edit Skeleton (+/-) "
+                           "or Filters > Point Set > Skeleton: Set Radius of Selected Nodes.");
+    const std::string violation = invariantViolation(skeleton);
+    if (!violation.empty()) throw InvalidInput("The skeleton is not valid: " + violation);
+}
+
+// The box holding the points and every node's ball, with a margin, as a grid whose cell
+// counts allow repeated halving (the multigrid levels).
+FieldGrid domainGrid(const PointList& points, const SkeletonGraph& skeleton, int resolution, Frame& frame) {
+    Eigen::AlignedBox3d box = boundingBox(points);
+    for (std::size_t n = 0; n < skeleton.nodeCount(); ++n) {
+        box.extend(skeleton.nodes[n] - Point::Constant(skeleton.radii[n]));
+        box.extend(skeleton.nodes[n] + Point::Constant(skeleton.radii[n]));
+    }
+    const Point size = box.sizes();
+    const double longest = std::max(size.maxCoeff(), 1e-12);
+    const int marginCells = std::max(2, int(std::ceil(kMarginShare * resolution)));
+    const double spacing = longest / (resolution - 2 * marginCells);
+    int halvings = 0;
+    while ((resolution >> (halvings + 1)) >= 8) ++halvings;
+    const int multiple = 1 << halvings;
+    FieldGrid grid;
+    Point extent;
+    for (int axis = 0; axis < 3; ++axis) {
+        int cells = int(std::ceil(size[axis] / spacing - 1e-9)) + 2 * marginCells;
+        cells = (cells + multiple - 1) / multiple * multiple;
+        grid.nodes[axis] = cells + 1;
+        extent[axis] = cells * spacing;
+    }
+    frame.origin = box.center() - 0.5 * extent;
+    frame.scale = kPaperResolution / (resolution * spacing);
+    grid.origin = Point::Zero();
+    grid.spacing = double(kPaperResolution) / resolution;
+    return grid;
+}
+
+// Measured peak: about 160 bytes per grid node (solution, constraints, multigrid levels).
+// Refusing beats being killed by the kernel half-way.
+void refuseGridLargerThanMemory(const FieldGrid& grid) {
+    constexpr double kBytesPerNode = 170;
+    const double needed = kBytesPerNode * double(grid.size());
+    const double available = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+    if (available > 0 && needed > 0.8 * available) {
+        std::ostringstream text;
+        text.precision(2);
+        text << "A grid of " << grid.nodes[0] << " x " << grid.nodes[1] << " x " << grid.nodes[2] << " nodes needs about "
+             << needed / 1e9 << " GB of memory and this machine has " << available / 1e9
+             << " GB: lower the grid resolution.";
+        throw InvalidInput(text.str());
+    }
+}
+
+SkeletonGraph skeletonInFrame(const SkeletonGraph& skeleton, const Frame& frame) {
+    SkeletonGraph result;
+    result.edges = skeleton.edges;
+    for (const Point& p : skeleton.nodes) result.nodes.push_back(frame.toFrame(p));
+    for (double r : skeleton.radii) result.radii.push_back(r * frame.scale);
+    return result;
+}
+
+// Most points must lie within K radii of the skeleton, or the skeleton is another shape's.
+double shareOfPointsFarFromSkeleton(const PointList& framePoints, const SkeletonDistance& distance, double outsideRadii) {
+    const std::size_t step = std::max<std::size_t>(1, framePoints.size() / 20000);
+    std::size_t checked = 0, far = 0;
+    for (std::size_t i = 0; i < framePoints.size(); i += step, ++checked) {
+        const SkeletonProximity near = distance.nearest(framePoints[i]);
+        if (near.distance > outsideRadii * near.radius) ++far;
+    }
+    return double(far) / double(checked);
+}
+
+void addSkeletonSamples(const SkeletonGraph& skeleton, double weight, std::vector<PointConstraint>& constraints) {
+    for (std::size_t n = 0; n < skeleton.nodeCount(); ++n)
+        constraints.push_back({skeleton.nodes[n], -skeleton.radii[n], weight});
+    for (const Edge& e : skeleton.edges) {
+        const Point a = skeleton.nodes[e[0]], b = skeleton.nodes[e[1]];
+        const int samples = int(std::ceil((b - a).norm() / kSkeletonSampleSpacing)) - 1;
+        for (int s = 1; s <= samples; ++s) {
+            const double t = double(s) / (samples + 1);
+            constraints.push_back({(1 - t) * a + t * b, -((1 - t) * skeleton.radii[e[0]] + t * skeleton.radii[e[1]]), weight});
+        }
+    }
+}
+
+// φ (distance to the skeleton minus the radius there) and the outside test at every node
+// of `grid`: computed exactly on the coarsest grid of at least kDistanceResolution cells,
+// interpolated on finer ones (both are 1-Lipschitz, so the interpolation error is a
+// fraction of a coarse cell, far below K radii).
+struct SkeletonDistanceField {
+    std::vector<double> cylindrical;  // φ
+    std::vector<double> beyondOutside;  // distance − K·radius: > 0 means outside
+};
+
+SkeletonDistanceField skeletonDistanceField(const FieldGrid& grid, const SkeletonDistance& distance, double outsideRadii) {
+    std::vector<FieldGrid> chain{grid};
+    while (chain.back().canCoarsen() &&
+           *std::max_element(chain.back().nodes.begin(), chain.back().nodes.end()) - 1 > 2 * kDistanceResolution)
+        chain.push_back(chain.back().coarser());
+    const FieldGrid& exact = chain.back();
+    SkeletonDistanceField field{std::vector<double>(exact.size()), std::vector<double>(exact.size())};
+#pragma omp parallel for schedule(dynamic, 1)
+    for (int k = 0; k < exact.nodes[2]; ++k)
+        for (int j = 0; j < exact.nodes[1]; ++j)
+            for (int i = 0; i < exact.nodes[0]; ++i) {
+                const SkeletonProximity near = distance.nearest(exact.position(i, j, k));
+                field.cylindrical[exact.index(i, j, k)] = near.distance - near.radius;
+                field.beyondOutside[exact.index(i, j, k)] = near.distance - outsideRadii * near.radius;
+            }
+    for (std::size_t level = chain.size() - 1; level > 0; --level) {
+        field.cylindrical = interpolateToFiner(chain[level], chain[level - 1], field.cylindrical);
+        field.beyondOutside = interpolateToFiner(chain[level], chain[level - 1], field.beyondOutside);
+    }
+    return field;
+}
+
+// Marching cubes closes the surface only if the grid's boundary is outside.
+std::size_t closeAtBoundary(const FieldGrid& grid, std::vector<double>& values) {
+    std::size_t opened = 0;
+    for (int k = 0; k < grid.nodes[2]; ++k)
+        for (int j = 0; j < grid.nodes[1]; ++j)
+            for (int i = 0; i < grid.nodes[0]; ++i)
+                if (grid.isBoundary(i, j, k) && values[grid.index(i, j, k)] <= 0) {
+                    values[grid.index(i, j, k)] = grid.spacing;
+                    ++opened;
+                }
+    return opened;
+}
+
+}  // namespace
+
+void checkReconstructionParameters(const ReconstructionParameters& p) {
+    auto require = [](bool ok, const std::string& message) {
+        if (!ok) throw InvalidInput(message);
+    };
+    require(isPositiveFinite(p.smoothWeight), "The smoothness weight must be positive.");
+    require(isPositiveFinite(p.surfaceWeight), "The surface weight must be positive: the points place the surface.");
+    require(p.skeletonWeight >= 0 && std::isfinite(p.skeletonWeight), "The skeleton weight must be 0 or more.");
+    require(p.outsideWeight >= 0 && std::isfinite(p.outsideWeight), "The outside weight must be 0 or more.");
+    require(p.outsideRadii > 1 && std::isfinite(p.outsideRadii),
+            "K (outside distance, in radii) must be more than 1: the outside starts beyond the skeleton's tube.");
+    require(p.resolution >= kMinimumResolution && p.resolution <= kMaximumResolution,
+            "The grid resolution must be between " + std::to_string(kMinimumResolution) + " and " +
+                std::to_string(kMaximumResolution) + " cells.");
+}
+
+Reconstruction reconstructFromSkeleton(const PointList& points, const SkeletonGraph& skeleton,
+                                       const ReconstructionParameters& parameters, const ProgressCallback& progress) {
+    checkReconstructionParameters(parameters);
+    checkInputs(points, skeleton);
+    const Clock::time_point start = Clock::now();
+    Reconstruction result;
+    ReconstructionReport& summary = result.report;
+    const double outsideRadii = parameters.outsideRadii;
+
+    report(progress, 0, "Setting up the field");
+    Frame frame{};
+    const FieldGrid grid = domainGrid(points, skeleton, parameters.resolution, frame);
+    refuseGridLargerThanMemory(grid);
+    summary.gridNodes = grid.nodes;
+    summary.unknowns = grid.size();
+    summary.cellSize = grid.spacing / frame.scale;
+    PointList framePoints;
+    framePoints.reserve(points.size());
+    for (const Point& p : points) framePoints.push_back(frame.toFrame(p));
+    const SkeletonGraph frameSkeleton = skeletonInFrame(skeleton, frame);
+    const SkeletonDistance distance(frameSkeleton);
+
+    const double farShare = shareOfPointsFarFromSkeleton(framePoints, distance, outsideRadii);
+    std::ostringstream farText;
+    farText << int(std::round(100 * farShare)) << "% of the points are farther than K = " << outsideRadii
+            << " radii from the skeleton";
+    if (farShare > 0.5)
+        throw InvalidInput(farText.str() +
+                           ": the skeleton does not describe this point layer. Choose the skeleton computed from these "
+                           "points, or raise the node radii or K.");
+    if (farShare > 0.05)
+        summary.warnings.push_back(farText.str() + ": the surface there only follows the points (raise K or the radii).");
+
+    FieldProblem problem;
+    problem.grid = grid;
+    problem.smoothnessWeight = parameters.smoothWeight;
+    problem.pointConstraints.reserve(points.size());
+    for (const Point& p : framePoints) problem.pointConstraints.push_back({p, 0.0, parameters.surfaceWeight});
+    summary.surfaceSamples = points.size();
+    if (parameters.skeletonWeight > 0) addSkeletonSamples(frameSkeleton, parameters.skeletonWeight, problem.pointConstraints);
+    summary.skeletonSamples = problem.pointConstraints.size() - points.size();
+
+    const SkeletonDistanceField skeletonField = skeletonDistanceField(grid, distance, outsideRadii);
+    // A node stands for spacing³ paper cells: the outside term means the same at any resolution.
+    const double outsideNodeWeight = parameters.outsideWeight * std::pow(grid.spacing, 3);
+    // The grid's boundary is ours, not the paper's: held firmly at the skeleton's distance
+    // estimate (as stiff as a node's smoothness term). Left weak, the boundary nodes form
+    // near-free harmonic modes that no smoother or coarse grid can correct.
+    const double boundaryWeight = 36 * parameters.smoothWeight / grid.spacing;
+    problem.nodeWeight.assign(grid.size(), 0.0);
+    problem.nodeValue.assign(grid.size(), 0.0);
+    for (int k = 0; k < grid.nodes[2]; ++k)
+        for (int j = 0; j < grid.nodes[1]; ++j)
+            for (int i = 0; i < grid.nodes[0]; ++i) {
+                const std::size_t n = grid.index(i, j, k);
+                const bool boundary = grid.isBoundary(i, j, k);
+                if (!boundary && skeletonField.beyondOutside[n] <= 0) continue;
+                problem.nodeWeight[n] = boundary ? boundaryWeight : outsideNodeWeight;
+                problem.nodeValue[n] = std::max(skeletonField.cylindrical[n], grid.spacing);
+                summary.outsideNodes += !boundary;
+            }
+    summary.setupSeconds = secondsSince(start);
+
+    const Clock::time_point solveStart = Clock::now();
+    FieldSolveReport solve;
+    std::vector<double> field =
+        solveField(problem, skeletonField.cylindrical, FieldSolverOptions{}, solve, progressRange(progress, 10, 85));
+    problem = FieldProblem{};  // the constraints are no longer needed: free them before extraction
+    summary.levels = solve.levels;
+    summary.iterations = solve.iterations;
+    summary.relativeResidual = solve.relativeResidual;
+    summary.converged = solve.converged;
+    summary.solveSeconds = secondsSince(solveStart);
+    if (!solve.converged)
+        summary.warnings.push_back("the solver stopped before reaching its tolerance; the surface may be rough.");
+
+    report(progress, 85, "Extracting the surface");
+    const Clock::time_point extractionStart = Clock::now();
+    if (const std::size_t opened = closeAtBoundary(grid, field))
+        summary.warnings.push_back("the surface reached the edge of the grid at " + std::to_string(opened) +
+                                   " nodes and was closed there (raise the outside weight).");
+    result.mesh = extractZeroLevelSet(grid, field);
+    if (result.mesh.triangles.empty())
+        throw InvalidInput("The field has no zero crossing: no surface was found. Check that the skeleton radii "
+                           "are close to the shape's thickness and the surface weight is not 0.");
+    for (Point& v : result.mesh.vertices) v = frame.toInput(v);
+    summary.topology = analyseSurface(result.mesh);
+    if (!summary.topology.closedManifold())
+        summary.warnings.push_back("the surface is not a closed 2-manifold: " + describe(summary.topology));
+    summary.extractionSeconds = secondsSince(extractionStart);
+    report(progress, 100, "Surface reconstructed");
+    return result;
+}
+
+std::string describe(const ReconstructionReport& r) {
+    std::ostringstream text;
+    text.precision(3);
+    text << "grid " << r.gridNodes[0] << " x " << r.gridNodes[1] << " x " << r.gridNodes[2] << " nodes (" << r.unknowns
+         << " unknowns, cell " << r.cellSize << "), " << r.levels << " multigrid levels\n"
+         << "constraints: " << r.surfaceSamples << " surface samples, " << r.skeletonSamples << " skeleton samples, "
+         << r.outsideNodes << " outside nodes\n"
+         << "solver: " << r.iterations << " iterations, relative residual " << std::scientific << r.relativeResidual
+         << std::fixed << std::setprecision(2) << (r.converged ? "" : " (not converged)") << "\n"
+         << "time: setup " << r.setupSeconds << " s, solve " << r.solveSeconds << " s, surface "
+         << r.extractionSeconds << " s\n"
+         << "result: " << describe(r.topology);
+    for (const std::string& warning : r.warnings) text << "\nwarning: " << warning;
+    return text.str();
+}
+
+}  // namespace pcskeleton

@@ -1,0 +1,70 @@
+// The curve skeleton: nodes, bones, per-node radius and the input points each node
+// stands for (the correspondence), plus the topology numbers users check first.
+#pragma once
+
+#include "pcskeleton/core/point_cloud_input.h"
+
+#include <array>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace pcskeleton {
+
+using Edge = std::array<int, 2>;  // node indices, smaller first
+
+struct SkeletonGraph {
+    PointList nodes;              // input frame
+    std::vector<Edge> edges;      // sorted, no duplicates, no self-loops
+    std::vector<double> radii;    // per node: mean distance to its corresponding input points
+    std::vector<int> pointNode;   // per input point: the node it belongs to (-1 = none)
+
+    std::size_t nodeCount() const { return nodes.size(); }
+    std::size_t edgeCount() const { return edges.size(); }
+};
+
+struct SkeletonTopology {
+    int nodes = 0, edges = 0;
+    int components = 0;  // connected components
+    int cycles = 0;      // independent cycles (first Betti number): edges - nodes + components
+    int tips = 0;        // nodes of degree 1
+    int junctions = 0;   // nodes of degree 3 or more
+    int isolated = 0;    // nodes of degree 0
+};
+
+SkeletonTopology analyseTopology(std::size_t nodeCount, const std::vector<Edge>& edges);
+inline SkeletonTopology analyseTopology(const SkeletonGraph& graph) {
+    return analyseTopology(graph.nodeCount(), graph.edges);
+}
+
+// "12 nodes, 11 edges, 1 component, 0 cycles, 2 tips, 0 junctions"
+std::string describe(const SkeletonTopology& topology);
+
+// Node degrees, one per node.
+std::vector<int> nodeDegrees(std::size_t nodeCount, const std::vector<Edge>& edges);
+
+// Each node's neighbours along the bones.
+std::vector<std::vector<int>> adjacencyLists(std::size_t nodeCount, const std::vector<Edge>& edges);
+
+// Sorts the edges, orders each edge's ends, drops duplicates and self-loops.
+void normalizeEdges(std::vector<Edge>& edges);
+
+// Whether a and b are joined by an edge, whichever end is named first.
+bool hasEdge(const std::vector<Edge>& edges, int a, int b);
+
+// A usable radius (or radius factor): positive and finite.
+inline bool isPositiveFinite(double value) { return value > 0.0 && value < std::numeric_limits<double>::infinity(); }
+
+// Empty when the graph is valid, else the first broken rule, meant for the user: one
+// radius per node, finite positions, edges between existing nodes, no self-loop, no
+// duplicate edge, radii positive and finite, correspondence naming existing nodes or -1.
+std::string invariantViolation(const SkeletonGraph& graph);
+
+// Gives every node whose radius is missing (zero, negative, not finite) a usable one: the
+// mean radius of its nearest nodes along the bones that have one; in a component with no
+// radius at all, half its mean bone length (or 1% of the nodes' extent when it has no
+// bone). A node owning a single point, or a skeleton read from a format without radii,
+// needs this before editing or reconstruction. Returns how many radii were filled.
+int fillMissingRadii(SkeletonGraph& graph);
+
+}  // namespace pcskeleton

@@ -1,0 +1,138 @@
+#include "pcskeleton/skeleton/skeleton_structure.h"
+
+#include <algorithm>
+#include <functional>
+#include <limits>
+#include <queue>
+
+namespace pcskeleton {
+
+namespace {
+
+double boneLength(const SkeletonGraph& graph, int a, int b) { return (graph.nodes[a] - graph.nodes[b]).norm(); }
+
+// Walks from `from` into `next` and on through nodes of degree 2; returns the nodes passed,
+// `from` first, ending at the first node whose degree is not 2 (or back at `from` on a
+// cycle without junctions).
+std::vector<int> walkChain(const std::vector<std::vector<int>>& neighbours, int from, int next) {
+    std::vector<int> path{from};
+    int previous = from, current = next;
+    while (true) {
+        path.push_back(current);
+        if (neighbours[current].size() != 2 || current == from) return path;
+        const int ahead = neighbours[current][0] == previous ? neighbours[current][1] : neighbours[current][0];
+        previous = current, current = ahead;
+    }
+}
+
+// Shortest path by bone length from `source` to `target` without the bone source-target;
+// empty when there is none.
+std::vector<int> shortestDetour(const SkeletonGraph& graph, const std::vector<std::vector<int>>& neighbours,
+                                int source, int target) {
+    const double infinity = std::numeric_limits<double>::infinity();
+    std::vector<double> distance(graph.nodeCount(), infinity);
+    std::vector<int> previous(graph.nodeCount(), -1);
+    using Entry = std::pair<double, int>;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+    distance[source] = 0.0;
+    queue.push({0.0, source});
+    while (!queue.empty()) {
+        const auto [d, n] = queue.top();
+        queue.pop();
+        if (n == target) break;
+        if (d > distance[n]) continue;
+        for (int m : neighbours[n]) {
+            if (n == source && m == target) continue;
+            const double through = d + boneLength(graph, n, m);
+            if (through < distance[m]) distance[m] = through, previous[m] = n, queue.push({through, m});
+        }
+    }
+    std::vector<int> path;
+    if (distance[target] == infinity) return path;
+    for (int n = target; n != -1; n = previous[n]) path.push_back(n);
+    std::reverse(path.begin(), path.end());
+    return path;
+}
+
+}  // namespace
+
+double pathLength(const SkeletonGraph& graph, const std::vector<int>& path) {
+    double length = 0.0;
+    for (std::size_t i = 1; i < path.size(); ++i) length += boneLength(graph, path[i - 1], path[i]);
+    return length;
+}
+
+std::vector<Limb> tipLimbs(const SkeletonGraph& graph) {
+    const auto neighbours = adjacencyLists(graph.nodeCount(), graph.edges);
+    std::vector<Limb> limbs;
+    for (std::size_t tip = 0; tip < graph.nodeCount(); ++tip) {
+        if (neighbours[tip].size() != 1) continue;
+        Limb limb;
+        limb.path = walkChain(neighbours, int(tip), neighbours[tip][0]);
+        limb.length = pathLength(graph, limb.path);
+        limb.atJunction = neighbours[limb.path.back()].size() >= 3;
+        limbs.push_back(std::move(limb));
+    }
+    return limbs;
+}
+
+bool isSpur(const SkeletonGraph& graph, const Limb& limb, double nodeSpacing) {
+    if (!limb.atJunction) return false;  // a whole component, not a spur of something
+    return limb.length < std::max(graph.radii[limb.path.back()], nodeSpacing);
+}
+
+std::vector<std::vector<int>> shortCycleBasis(const SkeletonGraph& graph) {
+    const auto neighbours = adjacencyLists(graph.nodeCount(), graph.edges);
+    // A breadth-first spanning forest; every other bone closes one independent cycle.
+    std::vector<int> parent(graph.nodeCount(), -2);
+    for (std::size_t root = 0; root < graph.nodeCount(); ++root) {
+        if (parent[root] != -2) continue;
+        parent[root] = -1;
+        std::queue<int> queue;
+        queue.push(int(root));
+        while (!queue.empty()) {
+            const int n = queue.front();
+            queue.pop();
+            for (int m : neighbours[n]) {
+                if (parent[m] == -2) parent[m] = n, queue.push(m);
+            }
+        }
+    }
+    std::vector<std::vector<int>> cycles;
+    for (const Edge& e : graph.edges) {
+        if (parent[e[0]] == e[1] || parent[e[1]] == e[0]) continue;
+        std::vector<int> cycle = shortestDetour(graph, neighbours, e[0], e[1]);
+        if (!cycle.empty()) cycles.push_back(std::move(cycle));
+    }
+    return cycles;
+}
+
+bool isSpuriousCycle(const SkeletonGraph& graph, const std::vector<int>& cycle, double nodeSpacing) {
+    Point centre = Point::Zero();
+    double tube = 0.0;
+    for (int n : cycle) centre += graph.nodes[n], tube += graph.radii[n];
+    centre /= double(cycle.size());
+    tube /= double(cycle.size());
+    double hole = 0.0;
+    for (int n : cycle) hole += (graph.nodes[n] - centre).norm();
+    hole /= double(cycle.size());
+    return hole < std::max(tube, nodeSpacing);
+}
+
+std::vector<std::vector<int>> closeJunctionPaths(const SkeletonGraph& graph, double nodeSpacing) {
+    const auto neighbours = adjacencyLists(graph.nodeCount(), graph.edges);
+    std::vector<std::vector<int>> paths;
+    for (std::size_t junction = 0; junction < graph.nodeCount(); ++junction) {
+        if (neighbours[junction].size() < 3) continue;
+        for (int next : neighbours[junction]) {
+            std::vector<int> path = walkChain(neighbours, int(junction), next);
+            const int end = path.back();
+            // Each path once: from its lower-numbered junction.
+            if (end <= int(junction) || neighbours[end].size() < 3) continue;
+            if (pathLength(graph, path) < nodeSpacing) paths.push_back(std::move(path));
+        }
+    }
+    return paths;
+}
+
+}  // namespace pcskeleton

@@ -1,0 +1,43 @@
+// The parts of a skeleton graph that its quality checks, refinement and tip extension
+// reason about: limbs (tip-to-junction branches), spurs, short cycles and close junctions.
+//
+// Criteria are geometric and relative to the skeleton itself, so they hold in any unit:
+// - a spur is a limb shorter than the radius at its junction (its tip is inside the body
+//   it sprouts from) or than the node spacing;
+// - a cycle is spurious when its hole is not there: the cycle's nodes lie closer to their
+//   centre than the tube around them is thick, or than the node spacing;
+// - two junctions are close when the bone path between them is shorter than the node
+//   spacing.
+#pragma once
+
+#include "pcskeleton/skeleton/skeleton_graph.h"
+
+#include <vector>
+
+namespace pcskeleton {
+
+// Total length of the bones along a node path.
+double pathLength(const SkeletonGraph& graph, const std::vector<int>& path);
+
+// From a tip along nodes of degree 2 to the first node of another degree (a junction, or
+// the other tip of an isolated chain), both ends included.
+struct Limb {
+    std::vector<int> path;    // path.front() is the tip, path.back() where the limb ends
+    double length = 0.0;
+    bool atJunction = false;  // false for an isolated chain, which ends at another tip
+};
+
+std::vector<Limb> tipLimbs(const SkeletonGraph& graph);
+
+bool isSpur(const SkeletonGraph& graph, const Limb& limb, double nodeSpacing);
+
+// One short cycle per independent cycle: for every bone outside a spanning forest, the
+// bone plus the shortest path (by length) between its ends that avoids it.
+std::vector<std::vector<int>> shortCycleBasis(const SkeletonGraph& graph);
+
+bool isSpuriousCycle(const SkeletonGraph& graph, const std::vector<int>& cycle, double nodeSpacing);
+
+// Paths (through degree-2 nodes) that join two junctions and are shorter than `nodeSpacing`.
+std::vector<std::vector<int>> closeJunctionPaths(const SkeletonGraph& graph, double nodeSpacing);
+
+}  // namespace pcskeleton
