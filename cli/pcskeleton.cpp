@@ -27,6 +27,39 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// The library's advice in this tool's terms: each parameter by its option.
+std::string optionOf(Parameter parameter) {
+    switch (parameter) {
+        case Parameter::NeighbourCount: return "--k";
+        case Parameter::InitialContractionWeight: return "--wl";
+        case Parameter::InitialAttractionWeight: return "--wh";
+        case Parameter::ContractionScale: return "--sl";
+        case Parameter::MaxContractionWeight: return "--max-wl";
+        case Parameter::MaxAttractionWeight: return "--max-wh";
+        case Parameter::LaplacianRowLimit: return "--row-limit";
+        case Parameter::MaxIterations: return "--iterations";
+        case Parameter::TerminationThreshold: return "--threshold";
+        case Parameter::NodeSpacing: return "--radius";
+        case Parameter::Refinement: return "--refine";
+        default: return libraryTerms().parameter(parameter);  // reconstruction: not an option here
+    }
+}
+
+std::string stepInThisTool(Step step) {
+    switch (step) {
+        case Step::RemoveOutliers: return "remove outliers from the input first";
+        case Step::RemoveNonFinitePoints: return "remove them from the input first";
+        case Step::DeleteNodes: return "delete them by hand (MeshLab's Edit Skeleton tool)";
+        case Step::MergeNodes: return "merge their nodes by hand (MeshLab's Edit Skeleton tool)";
+        default: return libraryTerms().step(step);
+    }
+}
+
+const Terms& commandLineTerms() {
+    static const Terms terms{optionOf, stepInThisTool};
+    return terms;
+}
+
 void printHelp() {
     const ContractionParameters c;
     const ThinningParameters t;
@@ -185,7 +218,7 @@ int main(int argc, char** argv) {
         writeSkeleton(result.skeleton, options.output);
         if (!options.contracted.empty()) writePointCloud(result.contraction.contracted, options.contracted);
         if (!options.correspondence.empty()) writeCorrespondence(result.skeleton, options.correspondence);
-        const std::string report = describe(result.quality);
+        const std::string report = describe(result.quality, commandLineTerms());
         if (!options.report.empty()) writeText(options.report, [&](std::ostream& out) { out << report << '\n'; });
         if (!options.quiet) {
             const StageSeconds& s = result.seconds;
@@ -199,7 +232,7 @@ int main(int argc, char** argv) {
         }
         return 0;
     } catch (const InvalidInput& e) {
-        std::fprintf(stderr, "pcskeleton: %s\n", e.what());
+        std::fprintf(stderr, "pcskeleton: %s\n", describe(e.problem(), commandLineTerms()).c_str());
     } catch (const std::bad_alloc&) {
         std::fprintf(stderr, "pcskeleton: out of memory; try a subsampled cloud.\n");
     } catch (const std::exception& e) {

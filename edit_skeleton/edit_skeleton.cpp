@@ -2,6 +2,7 @@
 
 #include "skeleton_panel.h"
 
+#include <filter_pcskeleton/meshlab_terms.h>
 #include <filter_pcskeleton/reconstruction_layer.h>
 #include <filter_pcskeleton/skeleton_layer.h>
 
@@ -132,7 +133,7 @@ bool EditSkeletonTool::StartEdit(MeshModel& m, GLArea* area, MLSceneGLSharedData
     try {
         editor_ = std::make_unique<SkeletonEditor>(std::move(skeleton));
     } catch (const InvalidInput& e) {
-        QMessageBox::information(area, "Edit Skeleton", e.what());
+        QMessageBox::information(area, "Edit Skeleton", meshlab::describeForMeshLab(e.problem(), meshlab::editorTerms()));
         return false;
     }
     layer_ = &m;
@@ -211,7 +212,9 @@ void EditSkeletonTool::apply(const std::function<void()>& operation) {
         panel_->showMessage(QString("Done: %1.").arg(QString::fromStdString(editor_->undoText())), false);
         storeInLayer();
     } catch (const InvalidInput& e) {
-        panel_->showMessage(e.what(), true);
+        panel_->showMessage(meshlab::describeForMeshLab(e.problem(), meshlab::editorTerms()), true);
+    } catch (const std::exception& e) {
+        panel_->showMessage(QString("Internal error: ") + e.what(), true);
     }
 }
 
@@ -301,9 +304,11 @@ void EditSkeletonTool::reconstructSurface() {
         // The tool keeps editing the skeleton: the new layer is not made current.
         result = meshlab::addReconstructionLayer(*document, *points, *layer_, ReconstructionParameters{}, report, false);
     } catch (const InvalidInput& e) {
-        failure = e.what();
+        failure = meshlab::describeForMeshLab(e.problem(), meshlab::editorTerms());
     } catch (const std::bad_alloc&) {
         failure = "Out of memory: use the filter with a lower grid resolution.";
+    } catch (const std::exception& e) {
+        failure = QString("Internal error: ") + e.what();
     }
     QApplication::restoreOverrideCursor();
     if (!result.layer) {

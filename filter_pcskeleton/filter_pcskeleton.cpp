@@ -1,5 +1,6 @@
 #include "filter_pcskeleton.h"
 
+#include "meshlab_terms.h"
 #include "reconstruction_layer.h"
 #include "skeleton_layer.h"
 
@@ -15,8 +16,11 @@
 #include <new>
 
 using namespace pcskeleton::meshlab;
+using pcskeleton::Parameter;
 
 namespace {
+
+QString label(Parameter parameter) { return parameterLabel(parameter); }
 
 const char* const kPaperReference =
     "<br><br>See: <i>Junjie Cao, Andrea Tagliasacchi, Matt Olson, Hao Zhang, Zhixun Su</i><br>"
@@ -36,28 +40,28 @@ const char* const kNeighbourHelp =
 
 void addContractionParameters(RichParameterList& list) {
     const pcskeleton::ContractionParameters d;
-    list.addParam(RichInt("k", d.neighbourCount, "Neighbours (k)", kNeighbourHelp));
-    list.addParam(RichFloat("contractionWeight", float(d.initialContractionWeight), "Initial contraction weight W_L0",
+    list.addParam(RichInt("k", d.neighbourCount, label(Parameter::NeighbourCount), kNeighbourHelp));
+    list.addParam(RichFloat("contractionWeight", float(d.initialContractionWeight), label(Parameter::InitialContractionWeight),
         "Strength of the Laplacian (shrinking) term in the first iteration, in the normalised frame where the "
         "cloud's longest side is 1.6. 0 = automatic: 1/(5 S0), S0 being the mean 1-ring size. Too high pulls thin "
         "parts into thick ones (paper Fig. 4d); too low lets tips stick out of the shape (Fig. 4a)."));
-    list.addParam(RichFloat("attractionWeight", float(d.initialAttractionWeight), "Initial attraction weight W_H0",
+    list.addParam(RichFloat("attractionWeight", float(d.initialAttractionWeight), label(Parameter::InitialAttractionWeight),
         "How strongly points are held at their positions. Acts opposite to W_L0 (paper Fig. 4e-h)."));
-    list.addParam(RichFloat("contractionScale", float(d.contractionScale), "Contraction scale s_L",
+    list.addParam(RichFloat("contractionScale", float(d.contractionScale), label(Parameter::ContractionScale),
         "W_L is multiplied by this after every iteration. The paper uses 3; use 2 for shapes with thin parts "
         "between thick ones (paper Fig. 10), at the cost of an extra iteration."));
     // An integer on purpose: MeshLab's dialog shows floats with 3 digits, and would read
     // 2048 back as 2050 on Apply.
-    list.addParam(RichInt("maxContractionWeight", int(d.maxContractionWeight), "Maximum W_L",
+    list.addParam(RichInt("maxContractionWeight", int(d.maxContractionWeight), label(Parameter::MaxContractionWeight),
         "Upper limit of the contraction weight, for numerical stability."));
-    list.addParam(RichFloat("maxAttractionWeight", float(d.maxAttractionWeight), "Maximum W_H",
+    list.addParam(RichFloat("maxAttractionWeight", float(d.maxAttractionWeight), label(Parameter::MaxAttractionWeight),
         "Upper limit of a point's attraction weight (it grows as the point's 1-ring shrinks)."));
-    list.addParam(RichFloat("laplacianRowLimit", float(d.laplacianRowLimit), "Laplacian row limit",
+    list.addParam(RichFloat("laplacianRowLimit", float(d.laplacianRowLimit), label(Parameter::LaplacianRowLimit),
         "A Laplacian row whose weights add up to more than this is scaled down; guards against the huge "
         "cotangents of nearly flat 1-ring triangles."));
-    list.addParam(RichInt("maxIterations", d.maxIterations, "Maximum iterations",
+    list.addParam(RichInt("maxIterations", d.maxIterations, label(Parameter::MaxIterations),
         "Contraction stops after this many iterations at the latest (most models converge in under 5)."));
-    list.addParam(RichFloat("terminationThreshold", float(d.terminationThreshold), "Termination threshold",
+    list.addParam(RichFloat("terminationThreshold", float(d.terminationThreshold), label(Parameter::TerminationThreshold),
         "Contraction stops when the total 1-ring size shrank by less than this fraction of its initial value "
         "in the last iteration."));
 }
@@ -78,7 +82,7 @@ pcskeleton::ContractionParameters readContractionParameters(const RichParameterL
 
 void addThinningParameters(RichParameterList& list) {
     const pcskeleton::ThinningParameters d;
-    list.addParam(RichFloat("sampleRadius", float(d.sampleRadius), "Node spacing (fraction of diagonal)",
+    list.addParam(RichFloat("sampleRadius", float(d.sampleRadius), label(Parameter::NodeSpacing),
         "Radius of the balls that sample the contracted points into skeleton nodes, as a fraction of the "
         "bounding-box diagonal (the paper's 0.02). Larger: fewer nodes, and parts or holes closer than this "
         "merge; smaller: more nodes, and noise may survive as short spurs or tiny loops."));
@@ -86,7 +90,7 @@ void addThinningParameters(RichParameterList& list) {
         "Contraction pulls the ends of limbs inwards, so the skeleton stops short of them. This extends every "
         "limb (not the short spurs) along its direction to the farthest of its tip's points, with a new end node. "
         "Turn it off to get the paper's skeleton exactly."));
-    list.addParam(RichBool("refine", d.refine, "Refine: remove spurs and spurious loops",
+    list.addParam(RichBool("refine", d.refine, label(Parameter::Refinement),
         "Cleans what noise leaves: limbs shorter than the body is thick where they join are absorbed into the "
         "junction, loops smaller than the tube around them collapse to a node, junctions closer than the node "
         "spacing merge. Off by default because it changes the paper's result; the log's quality report says "
@@ -102,6 +106,39 @@ pcskeleton::ThinningParameters readThinningParameters(const RichParameterList& l
     p.sampleRadius = list.getFloat("sampleRadius");
     p.extendTips = list.getBool("extendTips");
     p.refine = list.getBool("refine");
+    return p;
+}
+
+void addReconstructionParameters(RichParameterList& list) {
+    const pcskeleton::ReconstructionParameters d;
+    list.addParam(RichInt("resolution", d.resolution, label(Parameter::Resolution),
+        QString("Grid cells along the longest side (%1 to %2). Finer shows more detail; memory and time "
+                "grow with its cube (about 1 GB and 10 s at 256 for a ring-shaped object).")
+            .arg(pcskeleton::kMinimumResolution).arg(pcskeleton::kMaximumResolution)));
+    list.addParam(RichFloat("smoothWeight", float(d.smoothWeight), label(Parameter::SmoothWeight),
+        "Weight of the field's smoothness (the integral of its squared Laplacian). Raise it for noisy "
+        "scans; lower it to follow the points more closely."));
+    list.addParam(RichFloat("surfaceWeight", float(d.surfaceWeight), label(Parameter::SurfaceWeight),
+        "How strongly the surface passes through the points (field 0 there)."));
+    list.addParam(RichFloat("skeletonWeight", float(d.skeletonWeight), label(Parameter::SkeletonWeight),
+        "How strongly the field equals minus the node radius along the bones. Raise it if the surface "
+        "does not bridge a gap the skeleton crosses; the radius sets how thick the bridge is."));
+    list.addParam(RichFloat("outsideWeight", float(d.outsideWeight), label(Parameter::OutsideWeight),
+        "How strongly the field is positive far from the skeleton (a weak hint, the paper's 0.005). Raise "
+        "it if the surface bulges into empty space or closes holes the skeleton leaves open."));
+    list.addParam(RichFloat("outsideRadii", float(d.outsideRadii), label(Parameter::OutsideDistance),
+        "Space farther than K node radii from the skeleton counts as outside the shape (the paper's 4). "
+        "Lower it to keep gaps open next to thin parts."));
+}
+
+pcskeleton::ReconstructionParameters readReconstructionParameters(const RichParameterList& list) {
+    pcskeleton::ReconstructionParameters p;
+    p.resolution = list.getInt("resolution");
+    p.smoothWeight = list.getFloat("smoothWeight");
+    p.surfaceWeight = list.getFloat("surfaceWeight");
+    p.skeletonWeight = list.getFloat("skeletonWeight");
+    p.outsideWeight = list.getFloat("outsideWeight");
+    p.outsideRadii = list.getFloat("outsideRadii");
     return p;
 }
 
@@ -289,7 +326,7 @@ void FilterPCSkeletonPlugin::initParameterSet(QAction* action, MeshDocument& md,
         case FP_SKELETON_FROM_CONTRACTED:
             parameters.addParam(RichMesh("sourceLayer", likelySourceOf(md, md.mm()), &md, "Original points",
                 "The layer that was contracted: its points give the 1-rings, the node positions and the radii."));
-            parameters.addParam(RichInt("k", 0, "Neighbours (k)",
+            parameters.addParam(RichInt("k", 0, label(Parameter::NeighbourCount),
                 QString(kNeighbourHelp) + " Use the value the contraction used."));
             addThinningParameters(parameters);
             break;
@@ -305,30 +342,12 @@ void FilterPCSkeletonPlugin::initParameterSet(QAction* action, MeshDocument& md,
                 "selected nodes). Larger makes the reconstructed surface thicker there."));
             break;
         case FP_RECONSTRUCT_FROM_SKELETON: {
-            const pcskeleton::ReconstructionParameters d;
             parameters.addParam(RichMesh("pointsLayer", defaultPointsLayer(md), &md, "Points",
                 "The scan: the surface passes through its points. Faces, if any, are ignored."));
             parameters.addParam(RichMesh("skeletonLayer", defaultSkeletonLayer(md), &md, "Skeleton",
                 "The curve skeleton of these points, edited or not: its bones and node radii say where the inside "
                 "is, and its loops become the surface's handles."));
-            parameters.addParam(RichInt("resolution", d.resolution, "Grid resolution",
-                QString("Grid cells along the longest side (%1 to %2). Finer shows more detail; memory and time "
-                        "grow with its cube (about 1 GB and 10 s at 256 for a ring-shaped object).")
-                    .arg(pcskeleton::kMinimumResolution).arg(pcskeleton::kMaximumResolution)));
-            parameters.addParam(RichFloat("smoothWeight", float(d.smoothWeight), "Smoothness weight (w1)",
-                "Weight of the field's smoothness (the integral of its squared Laplacian). Raise it for noisy "
-                "scans; lower it to follow the points more closely."));
-            parameters.addParam(RichFloat("surfaceWeight", float(d.surfaceWeight), "Surface weight (w2)",
-                "How strongly the surface passes through the points (field 0 there)."));
-            parameters.addParam(RichFloat("skeletonWeight", float(d.skeletonWeight), "Skeleton weight (w3)",
-                "How strongly the field equals minus the node radius along the bones. Raise it if the surface "
-                "does not bridge a gap the skeleton crosses; the radius sets how thick the bridge is."));
-            parameters.addParam(RichFloat("outsideWeight", float(d.outsideWeight), "Outside weight (w4)",
-                "How strongly the field is positive far from the skeleton (a weak hint, the paper's 0.005). Raise "
-                "it if the surface bulges into empty space or closes holes the skeleton leaves open."));
-            parameters.addParam(RichFloat("outsideRadii", float(d.outsideRadii), "Outside distance K (radii)",
-                "Space farther than K node radii from the skeleton counts as outside the shape (the paper's 4). "
-                "Lower it to keep gaps open next to thin parts."));
+            addReconstructionParameters(parameters);
             break;
         }
     }
@@ -340,7 +359,7 @@ bool FilterPCSkeletonPlugin::applyFilter(QAction* action, MeshDocument& md, cons
     try {
         done = runFilter(ID(action), md, parameters, cb);
     } catch (const pcskeleton::InvalidInput& e) {
-        errorMessage = e.what();
+        errorMessage = describeForMeshLab(e.problem());
     } catch (const std::bad_alloc&) {
         errorMessage = "Out of memory: try a subsampled cloud (Filters > Sampling > Point Cloud Simplification).";
     } catch (const std::exception& e) {
@@ -436,7 +455,11 @@ void FilterPCSkeletonPlugin::addSkeletonLayers(MeshDocument& md, const MeshModel
     const QString label = derivedLabel(source, "skeleton");
     addSkeletonLayer(md, source, input, result.skeleton, label);
     Log("Skeleton '%s', quality report:", qUtf8Printable(label));
-    logReport(pcskeleton::describe(result.quality));
+    logLines(QString::fromStdString(pcskeleton::describeFindings(result.quality)), GLLogStream::FILTER);
+    const std::vector<pcskeleton::QualityWarning> warnings = result.quality.warnings();
+    if (warnings.empty()) logLines("No warnings.", GLLogStream::FILTER);
+    for (const pcskeleton::QualityWarning& w : warnings)
+        logLines("Warning: " + describeForMeshLab(w.problem), GLLogStream::WARNING);
     const pcskeleton::StageSeconds& seconds = result.seconds;
     Log("Time: 1-rings %.2f s, contraction %.2f s, thinning %.2f s, embedding %.2f s, finishing %.2f s.",
         seconds.neighbourhoods, seconds.contraction, seconds.thinning, seconds.embedding, seconds.finishing);
@@ -549,22 +572,16 @@ bool FilterPCSkeletonPlugin::reconstructFromSkeleton(MeshDocument& md, const Ric
         errorMessage = "Choose a point layer and a skeleton layer.";
         return false;
     }
-    pcskeleton::ReconstructionParameters settings;
-    settings.resolution = parameters.getInt("resolution");
-    settings.smoothWeight = parameters.getFloat("smoothWeight");
-    settings.surfaceWeight = parameters.getFloat("surfaceWeight");
-    settings.skeletonWeight = parameters.getFloat("skeletonWeight");
-    settings.outsideWeight = parameters.getFloat("outsideWeight");
-    settings.outsideRadii = parameters.getFloat("outsideRadii");
-    const ReconstructedLayer result = addReconstructionLayer(md, *points, *skeleton, settings, progressOf(cb));
+    const ReconstructedLayer result =
+        addReconstructionLayer(md, *points, *skeleton, readReconstructionParameters(parameters), progressOf(cb));
     Log("Reconstruction '%s' from '%s' and '%s':", qUtf8Printable(result.layer->label()),
         qUtf8Printable(points->label()), qUtf8Printable(skeleton->label()));
-    logReport(pcskeleton::describe(result.report));
+    logLines(QString::fromStdString(pcskeleton::describeFindings(result.report)), GLLogStream::FILTER);
+    for (const pcskeleton::ReconstructionWarning& w : result.report.warnings)
+        logLines("warning: " + describeForMeshLab(w.problem), GLLogStream::WARNING);
     return true;
 }
 
-void FilterPCSkeletonPlugin::logReport(const std::string& report) {
-    for (const QString& line : QString::fromStdString(report).split('\n')) {
-        Log(line.startsWith("warning:", Qt::CaseInsensitive) ? GLLogStream::WARNING : GLLogStream::FILTER, "  %s", qUtf8Printable(line));
-    }
+void FilterPCSkeletonPlugin::logLines(const QString& text, GLLogStream::Levels level) {
+    for (const QString& line : text.split('\n')) Log(level, "  %s", qUtf8Printable(line));
 }

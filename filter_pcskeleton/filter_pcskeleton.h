@@ -53,8 +53,8 @@ private:
                              std::size_t points);
     void addSkeletonLayers(MeshDocument& md, const MeshModel& source, const pcskeleton::meshlab::LayerPoints& input,
                            const pcskeleton::SkeletonResult& result, bool addSegments);
-    // Logs a multi-line report indented, its "Warning:" lines as warnings.
-    void logReport(const std::string& report);
+    // Logs each line of `text`, indented, at `level`.
+    void logLines(const QString& text, GLLogStream::Levels level);
     bool contractPointCloud(MeshDocument& md, const RichParameterList& parameters, vcg::CallBackPos* cb);
     bool computeSkeleton(MeshDocument& md, const RichParameterList& parameters, vcg::CallBackPos* cb);
     bool skeletonFromContracted(MeshDocument& md, const RichParameterList& parameters, vcg::CallBackPos* cb);

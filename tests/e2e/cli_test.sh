@@ -33,8 +33,9 @@ grep -q "^Tip extension: [0-9]* limbs extended" elephant.log || { cat elephant.l
 
 # --report writes the same report to a file; an unconverged run warns and names the fix.
 "$PCSKELETON" $M/knot.off -o knot_one.ply --iterations 1 --report knot_one.txt 2>/dev/null
-grep -q "^Warning: Contraction stopped at the iteration limit.*maximum iterations" knot_one.txt \
-  || { cat knot_one.txt; fail "--report lacks the iteration-limit warning"; }
+# The advice names this tool's options, never a MeshLab menu.
+grep -q "^Warning: Contraction stopped at the iteration limit.*raise --iterations or --sl" knot_one.txt \
+  || { cat knot_one.txt; fail "--report lacks the iteration-limit warning in the CLI's terms"; }
 
 # --no-extend-tips gives the paper's shorter skeleton: fewer nodes than with extension.
 "$PCSKELETON" $M/elephant.off -o elephant_paper.ply --no-extend-tips --quiet
@@ -81,7 +82,8 @@ printf '' >empty.xyz
 printf '0 0 0\n1 0 0\nnan 1 1\n' >nan.xyz
 for i in $(seq 0 40); do echo "$i 0 0"; done >line.xyz
 expect_error 1 "empty" empty.xyz -o out.ply
-expect_error 1 "NaN" nan.xyz -o out.ply
+expect_error 1 "NaN.*Remove them from the input first" nan.xyz -o out.ply
+! grep -q "Filters" err.txt || fail "the CLI's advice names a MeshLab menu: $(cat err.txt)"
 expect_error 1 "line" line.xyz -o out.ply
 expect_error 1 "cannot be opened" missing.xyz -o out.ply
 expect_error 1 "unknown extension" $M/knot.off.gz -o out.ply
@@ -89,6 +91,9 @@ expect_error 2 "no output" $M/knot.off
 expect_error 2 "must end in .ply, .obj or .cg" $M/knot.off -o out.swc
 expect_error 2 "expects a number" $M/knot.off -o out.ply --radius big
 expect_error 2 "unknown option" $M/knot.off -o out.ply --fast
-expect_error 1 "fraction" $M/knot.off -o out.ply --radius 2
+expect_error 1 "^pcskeleton: --radius must be a fraction" $M/knot.off -o out.ply --radius 2
+expect_error 1 "^pcskeleton: --sl must be at least 1" $M/knot.off -o out.ply --sl 0.5
+for i in $(seq 0 11); do echo "$((i % 4)) $((i / 4)) $((i % 3))"; done >few.xyz
+expect_error 1 "at least 21 are needed.*Lower --k" few.xyz -o out.ply --k 20
 [ ! -e out.ply ] || fail "a failed run wrote out.ply"
 echo "pcskeleton command line: OK"

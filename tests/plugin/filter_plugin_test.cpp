@@ -8,9 +8,6 @@
 #include <cmath>
 #include <limits>
 
-namespace {
-const char* const kContractFilter = "Contract Point Cloud (Laplacian)";
-}  // namespace
 
 TEST_F(FilterPluginTest, DeclaresAPointSetFilterThatMeshLabAccepts) {
     QAction* contract = action(kContractFilter);

@@ -14,6 +14,17 @@
 
 #include <gtest/gtest.h>
 
+// The filters by their menu names, as MeshLab and meshlabserver scripts find them.
+inline constexpr const char* kContractFilter = "Contract Point Cloud (Laplacian)";
+inline constexpr const char* kSkeletonFilter = "Compute Curve Skeleton (Laplacian Contraction)";
+inline constexpr const char* kThinningFilter = "Skeleton from Contracted Points";
+inline constexpr const char* kExportFilter = "Export Skeleton (PLY with edges, OBJ, CG)";
+inline constexpr const char* kDeleteFilter = "Skeleton: Delete Selected Nodes";
+inline constexpr const char* kConnectFilter = "Skeleton: Connect the Two Selected Nodes";
+inline constexpr const char* kMergeFilter = "Skeleton: Merge Selected Nodes";
+inline constexpr const char* kRadiusFilter = "Skeleton: Set Radius of Selected Nodes";
+inline constexpr const char* kReconstructFilter = "Reconstruct Surface from Skeleton";
+
 class FilterPluginTest : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {

@@ -11,9 +11,6 @@
 
 namespace {
 
-const char* const kReconstructFilter = "Reconstruct Surface from Skeleton";
-const char* const kSkeletonFilter = "Compute Curve Skeleton (Laplacian Contraction)";
-const char* const kConnectFilter = "Skeleton: Connect the Two Selected Nodes";
 constexpr double kPi = 3.14159265358979323846;
 
 using Allocator = vcg::tri::Allocator<CMeshO>;

@@ -7,12 +7,6 @@
 
 namespace {
 
-const char* const kSkeletonFilter = "Compute Curve Skeleton (Laplacian Contraction)";
-const char* const kDeleteFilter = "Skeleton: Delete Selected Nodes";
-const char* const kConnectFilter = "Skeleton: Connect the Two Selected Nodes";
-const char* const kMergeFilter = "Skeleton: Merge Selected Nodes";
-const char* const kRadiusFilter = "Skeleton: Set Radius of Selected Nodes";
-
 using Allocator = vcg::tri::Allocator<CMeshO>;
 
 class SkeletonEditFilterTest : public FilterPluginTest {

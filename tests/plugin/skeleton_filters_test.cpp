@@ -12,11 +12,6 @@
 
 namespace {
 
-const char* const kContractFilter = "Contract Point Cloud (Laplacian)";
-const char* const kSkeletonFilter = "Compute Curve Skeleton (Laplacian Contraction)";
-const char* const kThinningFilter = "Skeleton from Contracted Points";
-const char* const kExportFilter = "Export Skeleton (PLY with edges, OBJ, CG)";
-
 using SkeletonFilterTest = FilterPluginTest;
 
 std::string temporaryDirectory() {
@@ -232,6 +227,18 @@ TEST_F(SkeletonFilterTest, LogsTheQualityReportWithItsWarningsAsWarnings) {
     ASSERT_TRUE(apply(a, oneIteration)) << plugin->errorMsg().toStdString();
     const QString warnings = capture.text(GLLogStream::WARNING);
     EXPECT_TRUE(warnings.contains("iteration limit")) << warnings.toStdString();
+    // The advice names the dialog's fields, and nothing of the report's warning text lands at filter level.
+    EXPECT_TRUE(warnings.contains("raise 'Maximum iterations' or 'Contraction scale s_L'")) << warnings.toStdString();
+    EXPECT_FALSE(capture.text(GLLogStream::FILTER).contains("Warning:")) << capture.text(GLLogStream::FILTER).toStdString();
+}
+
+TEST_F(SkeletonFilterTest, ARefusedParameterIsNamedByItsDialogLabel) {
+    addPointLayer(pcskeleton::shapes::torus(2000, 1.0, 0.25), "torus");
+    QAction* a = action(kSkeletonFilter);
+    RichParameterList p = defaults(a);
+    p.setValue("contractionScale", FloatValue(0.5f));
+    ASSERT_FALSE(apply(a, p));
+    EXPECT_EQ(plugin->errorMsg().toStdString(), "'Contraction scale s_L' must be at least 1.");
 }
 
 TEST_F(SkeletonFilterTest, TipExtensionAndRefinementAreParametersWithHelp) {

@@ -1,19 +1,16 @@
 #include "pcskeleton/curve_skeleton.h"
 
-#include "pcskeleton/skeleton/skeleton_embedding.h"
 #include "pcskeleton/analysis/skeleton_refinement.h"
+#include "pcskeleton/internal/stopwatch.h"
+#include "pcskeleton/skeleton/skeleton_embedding.h"
 #include "pcskeleton/skeleton/skeleton_thinning.h"
 
-#include <chrono>
 #include <sstream>
 
 namespace pcskeleton {
 
 namespace {
 
-double secondsSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // The input points in the input's frame and order (duplicates merged by the cloud keep
 // their common position).
@@ -30,16 +27,16 @@ PointList inputPoints(const NormalizedCloud& cloud) {
 void thinAndEmbed(const NormalizedCloud& cloud, const OneRings& rings, const PointList& contracted,
                   const ThinningParameters& parameters, SkeletonResult& result, const ProgressCallback& progress) {
     checkThinningParameters(parameters);
-    auto start = std::chrono::steady_clock::now();
+    Stopwatch stage;
     const double radius = parameters.sampleRadius * cloud.diagonal;
     const ThinnedGraph thinned = thinContractedPoints(contracted, rings, radius, progress);
-    result.seconds.thinning = secondsSince(start);
+    result.seconds.thinning = stage.seconds();
 
-    start = std::chrono::steady_clock::now();
+    stage.restart();
     result.skeleton = embedSkeleton(thinned, cloud);
-    result.seconds.embedding = secondsSince(start);
+    result.seconds.embedding = stage.seconds();
 
-    start = std::chrono::steady_clock::now();
+    stage.restart();
     const double nodeSpacing = radius / cloud.scale;
     RefinementReport refinement;
     if (parameters.refine) refinement = refineSkeleton(result.skeleton, nodeSpacing);
@@ -54,17 +51,17 @@ void thinAndEmbed(const NormalizedCloud& cloud, const OneRings& rings, const Poi
     result.quality.stopReason = c.stopReason;
     result.quality.iterations = int(c.iterations.size());
     result.quality.extentRatio = c.iterations.empty() ? 1.0 : c.iterations.back().extentRatio;
-    result.seconds.finishing = secondsSince(start);
+    result.seconds.finishing = stage.seconds();
 }
 
 }  // namespace
 
 void checkThinningParameters(const ThinningParameters& parameters) {
     if (!(parameters.sampleRadius > 0.0 && parameters.sampleRadius < 1.0)) {
-        std::ostringstream message;
-        message << "The sampling radius must be a fraction of the bounding-box diagonal between 0 and 1 "
-                << "(the paper uses 0.02); got " << parameters.sampleRadius << ".";
-        throw InvalidInput(message.str());
+        std::ostringstream requirement;
+        requirement << "must be a fraction of the bounding-box diagonal between 0 and 1 (the paper uses 0.02); got "
+                    << parameters.sampleRadius << ".";
+        throw InvalidInput(Problem::aboutParameter(Parameter::NodeSpacing, requirement.str()));
     }
 }
 
@@ -92,17 +89,17 @@ SkeletonResult skeletonFromContractedPoints(const PointList& input, const PointL
     if (contracted.size() != input.size()) {
         std::ostringstream message;
         message << "The contracted layer has " << contracted.size() << " points but its input has " << input.size()
-                << "; contract that input again.";
-        throw InvalidInput(message.str());
+                << ".";
+        throw InvalidInput(message.str(), {Remedy::take(Step::ContractAgain)});
     }
     const int neighbours = k > 0 ? k : defaultNeighbourCount(input.size());
     const NormalizedCloud cloud = normalizeCloud(input, std::size_t(neighbours) + 1);
     SkeletonResult result;
-    auto start = std::chrono::steady_clock::now();
+    Stopwatch stage;
     const OneRings rings = OneRings::compute(cloud.points, neighbours, progressRange(progress, 0, 50));
-    result.seconds.neighbourhoods = secondsSince(start);
+    result.seconds.neighbourhoods = stage.seconds();
 
-    rejectNonFinite(contracted, "contracted points", "Contract the input again.");
+    rejectNonFinite(contracted, "contracted points", Remedy::take(Step::ContractAgain));
     PointList contractedUnique(cloud.points.size());
     for (std::size_t i = 0; i < input.size(); ++i) contractedUnique[cloud.uniqueIndex[i]] = cloud.toNormalizedFrame(contracted[i]);
     result.contraction.contracted = contracted;

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 using namespace pcskeleton;
 
 TEST(QualityReport, ATorusGivesOneCycleAndNoWarning) {
@@ -30,6 +32,10 @@ TEST(QualityReport, OutliersAreReported) {
     EXPECT_GT(result.quality.uncontractedPoints + result.quality.pointsOfIsolatedNodes, 0u) << text;
     EXPECT_FALSE(result.quality.warnings().empty()) << text;
     EXPECT_NE(text.find("Remove outliers"), std::string::npos) << text;
+    const std::vector<QualityWarning> warnings = result.quality.warnings();
+    EXPECT_TRUE(std::any_of(warnings.begin(), warnings.end(), [](const QualityWarning& w) {
+        return w.problem.suggests(Remedy::take(Step::RemoveOutliers));
+    })) << text;
 }
 
 TEST(QualityReport, APartThatCollapsesToAPointIsReported) {
@@ -47,9 +53,12 @@ TEST(QualityReport, IterationLimitIsAWarning) {
     oneIteration.contraction.maxIterations = 1;
     const SkeletonResult result = computeCurveSkeleton(shapes::torus(3000, 1.0, 0.3), oneIteration);
     EXPECT_EQ(result.quality.stopReason, StopReason::IterationLimit);
-    const std::vector<std::string> warnings = result.quality.warnings();
+    const std::vector<QualityWarning> warnings = result.quality.warnings();
     ASSERT_FALSE(warnings.empty());
-    EXPECT_NE(warnings.front().find("maximum iterations"), std::string::npos) << warnings.front();
+    EXPECT_EQ(warnings.front().kind, QualityWarning::Kind::IterationLimit);
+    EXPECT_TRUE(warnings.front().problem.suggests(Remedy::raise(Parameter::MaxIterations)));
+    const std::string text = describe(warnings.front().problem);
+    EXPECT_NE(text.find("maximum iterations"), std::string::npos) << text;
 }
 
 TEST(QualityReport, RefinementIsReportedWhenOn) {

@@ -1,5 +1,6 @@
 #include "pcskeleton/analysis/skeleton_quality.h"
 
+#include "pcskeleton/internal/counted.h"
 #include "pcskeleton/internal/disjoint_sets.h"
 #include "pcskeleton/skeleton/skeleton_distance.h"
 #include "pcskeleton/skeleton/skeleton_structure.h"
@@ -15,10 +16,6 @@ constexpr double kUncontractedRadiusShare = 1.0;
 constexpr double kUncontractedShareWarning = 0.01;
 constexpr double kOneSidedness = 0.8;
 constexpr int kMinimumPointsForSideCheck = 4;
-
-std::string count(std::size_t n, const char* one, const char* many) {
-    return std::to_string(n) + " " + (n == 1 ? one : many);
-}
 
 std::string percent(double share) {
     std::ostringstream s;
@@ -106,73 +103,92 @@ SkeletonQuality assessSkeleton(const SkeletonGraph& skeleton, const NormalizedCl
     return quality;
 }
 
-std::vector<std::string> SkeletonQuality::warnings() const {
-    std::vector<std::string> w;
+std::vector<QualityWarning> SkeletonQuality::warnings() const {
+    using Kind = QualityWarning::Kind;
+    std::vector<QualityWarning> w;
+    const auto add = [&w](Kind kind, std::string description, std::vector<Remedy> remedies) {
+        w.push_back({kind, Problem{std::move(description), std::move(remedies)}});
+    };
     if (stopReason == StopReason::IterationLimit) {
-        w.push_back("Contraction stopped at the iteration limit before converging: raise the maximum iterations "
-                    "or the contraction scale s_L.");
+        add(Kind::IterationLimit, "Contraction stopped at the iteration limit before converging",
+            {Remedy::raise(Parameter::MaxIterations), Remedy::raise(Parameter::ContractionScale)});
     } else if (stopReason == StopReason::NumericalFailure) {
-        w.push_back("Contraction failed numerically and kept its last good positions: lower the initial "
-                    "contraction weight W_L0 or the Laplacian row limit.");
+        add(Kind::NumericalFailure, "Contraction failed numerically and kept its last good positions",
+            {Remedy::lower(Parameter::InitialContractionWeight), Remedy::lower(Parameter::LaplacianRowLimit)});
     }
     if (points > 0 && uncontractedPoints > kUncontractedShareWarning * points) {
-        w.push_back(count(uncontractedPoints, "point", "points") + " (" + percent(double(uncontractedPoints) / points) +
-                    ") did not contract (they stayed farther from the skeleton than its radius there): "
-                    "outliers, or a part too flat or thick for the iterations given. Remove outliers first, or "
-                    "raise k or the maximum iterations.");
+        add(Kind::UncontractedPoints,
+            counted(uncontractedPoints, "point", "points") + " (" + percent(double(uncontractedPoints) / points) +
+                ") did not contract (they stayed farther from the skeleton than its radius there): outliers, or a "
+                "part too flat or thick for the iterations given.",
+            {Remedy::take(Step::RemoveOutliers), Remedy::raise(Parameter::NeighbourCount),
+             Remedy::raise(Parameter::MaxIterations)});
     }
     if (partsWithoutBone > 0) {
-        w.push_back(count(partsWithoutBone, "part", "parts") + " of the input (" +
-                    count(pointsWithoutBone, "point", "points") +
-                    ") gave no bone: each collapsed to an isolated node (outlier clusters, or blob-like pieces "
-                    "separate from the rest). Remove them, or lower k if they are real parts cut off.");
+        add(Kind::PartsWithoutBone,
+            counted(partsWithoutBone, "part", "parts") + " of the input (" +
+                counted(pointsWithoutBone, "point", "points") +
+                ") gave no bone: each collapsed to an isolated node (outlier clusters, or blob-like pieces "
+                "separate from the rest, or real parts cut off).",
+            {Remedy::take(Step::RemoveOutliers), Remedy::lower(Parameter::NeighbourCount)});
     }
     if (topology.isolated > 0) {
-        w.push_back(count(std::size_t(topology.isolated), "node has", "nodes have") + " no bone (" +
-                    count(pointsOfIsolatedNodes, "point", "points") +
-                    "): outliers, or pieces too small to give a curve. Remove outliers first; delete these nodes "
-                    "in Edit Skeleton.");
+        add(Kind::IsolatedNodes,
+            counted(std::size_t(topology.isolated), "node has", "nodes have") + " no bone (" +
+                counted(pointsOfIsolatedNodes, "point", "points") + "): outliers, or pieces too small to give a curve.",
+            {Remedy::take(Step::RemoveOutliers), Remedy::take(Step::DeleteNodes)});
     }
     if (!nodesOutside.empty()) {
-        w.push_back(count(nodesOutside.size(), "node lies", "nodes lie") +
-                    " outside the shape (all its points on one side), e.g. where the centre of a bent part falls "
-                    "outside it: lower the node spacing.");
+        add(Kind::NodesOutside,
+            counted(nodesOutside.size(), "node lies", "nodes lie") +
+                " outside the shape (all its points on one side), e.g. where the centre of a bent part falls "
+                "outside it",
+            {Remedy::lower(Parameter::NodeSpacing)});
     }
     if (!spurs.empty()) {
-        w.push_back(count(spurs.size(), "short spur", "short spurs") +
-                    " (limbs shorter than the body is thick where they join): usually noise. Turn on refinement, "
-                    "delete them in Edit Skeleton, or raise k.");
+        add(Kind::Spurs,
+            counted(spurs.size(), "short spur", "short spurs") +
+                " (limbs shorter than the body is thick where they join): usually noise.",
+            {Remedy::turnOn(Parameter::Refinement), Remedy::take(Step::DeleteNodes),
+             Remedy::raise(Parameter::NeighbourCount)});
     }
     if (!spuriousCycles.empty()) {
-        w.push_back(count(spuriousCycles.size(), "loop is", "loops are") +
-                    " smaller than the tube around them (no hole to go round): probably spurious. Turn on "
-                    "refinement, raise the node spacing, or merge their nodes in Edit Skeleton.");
+        add(Kind::SpuriousCycles,
+            counted(spuriousCycles.size(), "loop is", "loops are") +
+                " smaller than the tube around them (no hole to go round): probably spurious.",
+            {Remedy::turnOn(Parameter::Refinement), Remedy::raise(Parameter::NodeSpacing),
+             Remedy::take(Step::MergeNodes)});
     }
     return w;
 }
 
-std::string describe(const SkeletonQuality& q) {
+std::string describeFindings(const SkeletonQuality& q) {
     std::ostringstream s;
     s << "Skeleton: " << describe(q.topology) << "; node spacing " << std::setprecision(3) << q.nodeSpacing << ".\n";
     if (q.stopReason == StopReason::NotStopped) {
         s << "Contraction: thinned from saved contracted points.\n";
     } else {
-        s << "Contraction: " << count(std::size_t(q.iterations), "iteration", "iterations") << ", "
+        s << "Contraction: " << counted(std::size_t(q.iterations), "iteration", "iterations") << ", "
           << describe(q.stopReason) << "; mean 1-ring size " << percent(q.extentRatio) << " of the initial.\n";
     }
-    s << "Input: " << count(q.points, "point", "points") << " in " << count(std::size_t(q.inputParts), "part", "parts")
+    s << "Input: " << counted(q.points, "point", "points") << " in " << counted(std::size_t(q.inputParts), "part", "parts")
       << "; " << q.uncontractedPoints << " did not contract.\n";
     s << "Tip extension: ";
     if (!q.tipsExtended) s << "off.\n";
     else if (q.tipExtension.extendedTips == 0) s << "no limb to extend.\n";
-    else s << count(std::size_t(q.tipExtension.extendedTips), "limb", "limbs") << " extended, by "
+    else s << counted(std::size_t(q.tipExtension.extendedTips), "limb", "limbs") << " extended, by "
            << std::setprecision(3) << q.tipExtension.meanLength << " on average, at most "
            << q.tipExtension.longest << ".\n";
-    s << "Refinement: " << (q.refined ? describe(q.refinement) : std::string("off")) << ".\n";
-    const std::vector<std::string> warnings = q.warnings();
-    if (warnings.empty()) s << "No warnings.";
-    for (std::size_t i = 0; i < warnings.size(); ++i) s << (i ? "\n" : "") << "Warning: " << warnings[i];
+    s << "Refinement: " << (q.refined ? describe(q.refinement) : std::string("off")) << ".";
     return s.str();
+}
+
+std::string describe(const SkeletonQuality& q, const Terms& terms) {
+    std::string text = describeFindings(q);
+    const std::vector<QualityWarning> warnings = q.warnings();
+    if (warnings.empty()) text += "\nNo warnings.";
+    for (const QualityWarning& w : warnings) text += "\nWarning: " + describe(w.problem, terms);
+    return text;
 }
 
 }  // namespace pcskeleton

@@ -1,7 +1,8 @@
 // The quality report of a skeleton run: what was computed, whether contraction did its
 // job, and the failure modes a user should know about before trusting the result.
 //
-// Checks (each one names the parameter that usually fixes it, see describe()):
+// Checks (each one names the parameters or steps that usually fix it, as remedies that each
+// front end words in its own terms):
 // - points that did not contract: their contracted position is farther from the skeleton
 //   than the radius there (outliers, or parts too flat or thick for the iterations given);
 // - parts of the input (connected through the 1-rings) whose nodes have no bone: they
@@ -16,11 +17,27 @@
 #include "pcskeleton/skeleton/skeleton_graph.h"
 #include "pcskeleton/analysis/skeleton_refinement.h"
 #include "pcskeleton/analysis/tip_extension.h"
+#include "pcskeleton/core/advice.h"
 
 #include <string>
 #include <vector>
 
 namespace pcskeleton {
+
+struct QualityWarning {
+    enum class Kind {
+        IterationLimit,
+        NumericalFailure,
+        UncontractedPoints,
+        PartsWithoutBone,
+        IsolatedNodes,
+        NodesOutside,
+        Spurs,
+        SpuriousCycles,
+    };
+    Kind kind;
+    Problem problem;
+};
 
 struct SkeletonQuality {
     SkeletonTopology topology;
@@ -46,13 +63,17 @@ struct SkeletonQuality {
     bool tipsExtended = false;
     TipExtensionReport tipExtension;
 
-    // One sentence per problem found, each saying what to change; empty when none.
-    std::vector<std::string> warnings() const;
+    // One per problem found, each with what to change; empty when none.
+    std::vector<QualityWarning> warnings() const;
 };
 
-// Multi-line report: the skeleton's numbers, the contraction, the post-processing, then
-// the warnings (or "no warnings").
-std::string describe(const SkeletonQuality& quality);
+// The report's first lines: the skeleton's numbers, the contraction, the input, the
+// post-processing.
+std::string describeFindings(const SkeletonQuality& quality);
+
+// The whole report: the findings, then one "Warning: ..." line per warning, its remedies
+// worded in `terms` (or "No warnings.").
+std::string describe(const SkeletonQuality& quality, const Terms& terms = libraryTerms());
 
 // The checks on `skeleton` (input frame), computed from the contraction's own data:
 // `cloud` and its `rings`, and `contracted`, the contracted distinct points in the

@@ -1,9 +1,9 @@
 #include "pcskeleton/analysis/skeleton_refinement.h"
 
+#include "pcskeleton/internal/counted.h"
 #include "pcskeleton/internal/disjoint_sets.h"
 #include "pcskeleton/skeleton/skeleton_structure.h"
 
-#include <sstream>
 
 namespace pcskeleton {
 
@@ -83,11 +83,9 @@ int mergeCloseJunctions(SkeletonGraph& skeleton, double nodeSpacing) {
 }  // namespace
 
 std::string describe(const RefinementReport& r) {
-    std::ostringstream s;
-    s << "removed " << r.spursRemoved << (r.spursRemoved == 1 ? " spur, " : " spurs, ") << "collapsed "
-      << r.cyclesCollapsed << (r.cyclesCollapsed == 1 ? " small loop, " : " small loops, ") << "merged "
-      << r.junctionsMerged << (r.junctionsMerged == 1 ? " pair" : " pairs") << " of close junctions";
-    return s.str();
+    return "removed " + counted(std::size_t(r.spursRemoved), "spur") + ", collapsed " +
+           counted(std::size_t(r.cyclesCollapsed), "small loop") + ", merged " +
+           counted(std::size_t(r.junctionsMerged), "pair") + " of close junctions";
 }
 
 RefinementReport refineSkeleton(SkeletonGraph& skeleton, double nodeSpacing) {

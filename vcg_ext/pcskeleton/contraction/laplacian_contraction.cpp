@@ -1,19 +1,14 @@
 #include "pcskeleton/contraction/laplacian_contraction.h"
 
+#include "pcskeleton/internal/stopwatch.h"
+
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <numeric>
 
 namespace pcskeleton {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 // Positions this far out (in normalised units, where the cloud spans 1.6) mean the
 // solve diverged: a contraction only ever moves points inwards.
@@ -26,17 +21,19 @@ bool diverged(const PointList& points) {
 }
 
 void checkParameters(const ContractionParameters& p) {
-    auto require = [](bool ok, const char* message) {
-        if (!ok) throw InvalidInput(message);
+    auto require = [](bool ok, Parameter parameter, const char* requirement) {
+        if (!ok) throw InvalidInput(Problem::aboutParameter(parameter, requirement));
     };
-    require(p.neighbourCount == 0 || p.neighbourCount >= 4, "k must be 0 (automatic) or at least 4.");
-    require(p.initialContractionWeight >= 0, "The initial contraction weight W_L0 must be >= 0 (0 = automatic).");
-    require(p.initialAttractionWeight > 0, "The initial attraction weight W_H0 must be positive.");
-    require(p.contractionScale >= 1, "The contraction scale s_L must be at least 1.");
-    require(p.maxContractionWeight > 0 && p.maxAttractionWeight > 0, "Weight limits must be positive.");
-    require(p.laplacianRowLimit > 0, "The Laplacian row limit must be positive.");
-    require(p.maxIterations >= 1, "The iteration limit must be at least 1.");
-    require(p.terminationThreshold >= 0, "The termination threshold must be >= 0.");
+    require(p.neighbourCount == 0 || p.neighbourCount >= 4, Parameter::NeighbourCount,
+            "must be 0 (automatic) or at least 4.");
+    require(p.initialContractionWeight >= 0, Parameter::InitialContractionWeight, "must be >= 0 (0 = automatic).");
+    require(p.initialAttractionWeight > 0, Parameter::InitialAttractionWeight, "must be positive.");
+    require(p.contractionScale >= 1, Parameter::ContractionScale, "must be at least 1.");
+    require(p.maxContractionWeight > 0, Parameter::MaxContractionWeight, "must be positive.");
+    require(p.maxAttractionWeight > 0, Parameter::MaxAttractionWeight, "must be positive.");
+    require(p.laplacianRowLimit > 0, Parameter::LaplacianRowLimit, "must be positive.");
+    require(p.maxIterations >= 1, Parameter::MaxIterations, "must be at least 1.");
+    require(p.terminationThreshold >= 0, Parameter::TerminationThreshold, "must be >= 0.");
 }
 
 int chooseNeighbourCount(const ContractionParameters& p, std::size_t inputSize) {
@@ -62,9 +59,9 @@ LaplacianContraction::LaplacianContraction(const PointList& input, const Contrac
     const int k = chooseNeighbourCount(parameters_, input.size());
     cloud_ = normalizeCloud(input, static_cast<std::size_t>(k) + 1);
 
-    const auto start = Clock::now();
+    const Stopwatch stopwatch;
     rings_ = OneRings::compute(cloud_.points, k, progress);
-    neighbourhoodSeconds_ = secondsSince(start);
+    neighbourhoodSeconds_ = stopwatch.seconds();
 
     positions_ = cloud_.points;
     laplacian_ = std::make_unique<CotangentLaplacian>(rings_, parameters_.laplacianRowLimit);
@@ -114,7 +111,7 @@ void LaplacianContraction::updateWeights(const std::vector<double>& extents) {
 
 IterationReport LaplacianContraction::iterate() {
     if (finished()) return history_.back();
-    const auto start = Clock::now();
+    const Stopwatch stopwatch;
     IterationReport report;
     report.iteration = static_cast<int>(history_.size()) + 1;
     report.contractionWeight = contractionWeight_;
@@ -124,7 +121,7 @@ IterationReport LaplacianContraction::iterate() {
     if (!solve(contractionWeight_, next)) {
         stopReason_ = StopReason::NumericalFailure;
         report.extentRatio = previousRatio;
-        report.seconds = secondsSince(start);
+        report.seconds = stopwatch.seconds();
         history_.push_back(report);
         return report;
     }
@@ -145,7 +142,7 @@ IterationReport LaplacianContraction::iterate() {
         stopReason_ = StopReason::IterationLimit;
     }
     contractionStarted_ = contractionStarted_ || shrinkage >= parameters_.terminationThreshold;
-    report.seconds = secondsSince(start);
+    report.seconds = stopwatch.seconds();
     history_.push_back(report);
     return report;
 }

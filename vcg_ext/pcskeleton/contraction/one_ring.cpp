@@ -1,13 +1,10 @@
 #include "pcskeleton/contraction/one_ring.h"
 
+#include "pcskeleton/internal/spatial_index.h"
+
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Orthogonal_k_neighbor_search.h>
-#include <CGAL/Search_traits_3.h>
-#include <CGAL/Search_traits_adapter.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
-#include <CGAL/property_map.h>
-#include <boost/iterator/counting_iterator.hpp>
 
 #include <Eigen/Eigenvalues>
 
@@ -24,13 +21,7 @@ namespace pcskeleton {
 namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point3 = Kernel::Point_3;
 using Point2 = Kernel::Point_2;
-
-using PointMap = CGAL::Pointer_property_map<Point3>::type;
-using SearchTraits = CGAL::Search_traits_adapter<std::size_t, PointMap, CGAL::Search_traits_3<Kernel>>;
-using NeighbourSearch = CGAL::Orthogonal_k_neighbor_search<SearchTraits>;
-using KdTree = NeighbourSearch::Tree;
 
 using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<int, Kernel>;
 using DataStructure = CGAL::Triangulation_data_structure_2<VertexBase>;
@@ -44,8 +35,7 @@ struct LocalFan {
 // Everything one thread needs to build fans, reused from point to point.
 class FanBuilder {
 public:
-    FanBuilder(const PointList& points, const KdTree& tree, const PointMap& pointMap, int k)
-        : points_(points), tree_(tree), distance_(pointMap), k_(k) {}
+    FanBuilder(const PointList& points, const PointIndex& index, int k) : points_(points), index_(index), k_(k) {}
 
     void build(int i, LocalFan& fan) {
         fan.triangles.clear();
@@ -59,13 +49,9 @@ public:
 
 private:
     void gatherNeighbours(int i) {
-        neighbours_.clear();
-        const Point& p = points_[i];
         // k + 1 because the query point finds itself.
-        NeighbourSearch search(tree_, Point3(p.x(), p.y(), p.z()), k_ + 1, 0, true, distance_);
-        for (const auto& hit : search) {
-            if (static_cast<int>(hit.first) != i) neighbours_.push_back(static_cast<int>(hit.first));
-        }
+        index_.nearest(points_[i], k_ + 1, neighbours_);
+        neighbours_.erase(std::remove(neighbours_.begin(), neighbours_.end(), i), neighbours_.end());
     }
 
     void projectOnTangentPlane(int i) {
@@ -119,8 +105,7 @@ private:
     }
 
     const PointList& points_;
-    const KdTree& tree_;
-    NeighbourSearch::Distance distance_;
+    const PointIndex& index_;
     int k_;
     std::vector<int> neighbours_;
     std::vector<std::pair<Point2, int>> projected_;
@@ -139,13 +124,7 @@ OneRings OneRings::compute(const PointList& points, int k, const ProgressCallbac
     OneRings rings;
     rings.k_ = std::min<int>(k, static_cast<int>(n) - 1);
 
-    std::vector<Point3> cgalPoints;
-    cgalPoints.reserve(n);
-    for (const Point& p : points) cgalPoints.emplace_back(p.x(), p.y(), p.z());
-    PointMap pointMap(cgalPoints.data());
-    KdTree tree(boost::counting_iterator<std::size_t>(0), boost::counting_iterator<std::size_t>(n),
-                KdTree::Splitter(), SearchTraits(pointMap));
-    tree.build();  // before the parallel queries: the tree builds lazily otherwise
+    const PointIndex index(points);
     report(progress, 10, "Neighbourhoods: k-d tree built");
 
     // Each thread handles a contiguous block of points, so concatenating the threads'
@@ -166,7 +145,7 @@ OneRings OneRings::compute(const PointList& points, int k, const ProgressCallbac
             blockRings.resize(threads);
         }
         const std::size_t begin = n * thread / threads, end = n * (thread + 1) / threads;
-        FanBuilder builder(points, tree, pointMap, rings.k_);
+        FanBuilder builder(points, index, rings.k_);
         LocalFan fan;
         for (std::size_t i = begin; i < end; ++i) {
             builder.build(static_cast<int>(i), fan);

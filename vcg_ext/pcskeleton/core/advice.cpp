@@ -29,7 +29,7 @@ std::string libraryParameterName(Parameter p) {
         case Parameter::SurfaceWeight: return "the surface weight";
         case Parameter::SkeletonWeight: return "the skeleton weight";
         case Parameter::OutsideWeight: return "the outside weight";
-        case Parameter::OutsideDistance: return "K";
+        case Parameter::OutsideDistance: return "K (outside distance, in radii)";
     }
     return "a parameter";
 }
@@ -42,11 +42,12 @@ std::string libraryStep(Step s) {
         case Step::DeleteNodes: return "delete them in a skeleton editor";
         case Step::MergeNodes: return "merge their nodes in a skeleton editor";
         case Step::SetNodeRadii: return "set the node radii in a skeleton editor";
+        case Step::ContractAgain: return "contract the input again";
     }
     return "edit the input";
 }
 
-const char* verb(Remedy::Kind kind) {
+std::string verb(Remedy::Kind kind) {
     switch (kind) {
         case Remedy::Kind::Raise: return "raise ";
         case Remedy::Kind::Lower: return "lower ";
@@ -56,8 +57,10 @@ const char* verb(Remedy::Kind kind) {
     return "";
 }
 
+// A sentence starts with a capital, unless it starts with a symbol ("k", "--sl").
 std::string capitalised(std::string text) {
-    if (!text.empty()) text[0] = char(std::toupper(static_cast<unsigned char>(text[0])));
+    const bool word = text.size() > 1 && std::isalpha(static_cast<unsigned char>(text[1]));
+    if (word) text[0] = char(std::toupper(static_cast<unsigned char>(text[0])));
     return text;
 }
 
@@ -69,23 +72,32 @@ const Terms& libraryTerms() {
 }
 
 std::string describeRemedies(const std::vector<Remedy>& remedies, const Terms& terms) {
-    std::string text;
+    // Consecutive remedies of the same kind share their verb: "raise A or B".
+    std::vector<std::string> groups;
     for (std::size_t i = 0; i < remedies.size(); ++i) {
         const Remedy& r = remedies[i];
-        if (i > 0) text += i + 1 < remedies.size() ? ", " : (remedies.size() > 2 ? ", or " : " or ");
-        const bool sameVerb = i > 0 && r.kind != Remedy::Kind::Take && r.kind == remedies[i - 1].kind;
-        if (!sameVerb) text += verb(r.kind);
-        text += r.kind == Remedy::Kind::Take ? terms.step(r.step) : terms.parameter(r.parameter);
+        const std::string object = r.kind == Remedy::Kind::Take ? terms.step(r.step) : terms.parameter(r.parameter);
+        if (i > 0 && r.kind != Remedy::Kind::Take && r.kind == remedies[i - 1].kind) {
+            groups.back() += " or " + object;
+        } else {
+            groups.push_back(verb(r.kind) + object);
+        }
+    }
+    std::string text;
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+        if (g > 0) text += g + 1 < groups.size() ? ", " : ", or ";
+        text += groups[g];
     }
     return text;
 }
 
 std::string describe(const Problem& problem, const Terms& terms) {
-    if (problem.remedies.empty()) return problem.description;
+    const std::string description =
+        problem.subject ? capitalised(terms.parameter(*problem.subject)) + " " + problem.description : problem.description;
+    if (problem.remedies.empty()) return description;
     const std::string remedies = describeRemedies(problem.remedies, terms);
-    const bool sentence = !problem.description.empty() && problem.description.back() == '.';
-    return sentence ? problem.description + " " + capitalised(remedies) + "."
-                    : problem.description + ": " + remedies + ".";
+    const bool sentence = !description.empty() && description.back() == '.';
+    return sentence ? description + " " + capitalised(remedies) + "." : description + ": " + remedies + ".";
 }
 
 }  // namespace pcskeleton

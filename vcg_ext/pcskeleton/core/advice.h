@@ -5,7 +5,9 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace pcskeleton {
@@ -39,6 +41,7 @@ enum class Step {
     DeleteNodes,            // the nodes the problem names, by hand
     MergeNodes,             // the nodes the problem names, by hand
     SetNodeRadii,           // of the skeleton, by hand
+    ContractAgain,          // the input, because its contracted points do not fit it
 };
 
 struct Remedy {
@@ -57,11 +60,19 @@ struct Remedy {
 };
 
 struct Problem {
+    Problem() = default;
+    Problem(std::string description_, std::vector<Remedy> remedies_ = {}, std::optional<Parameter> subject_ = {})
+        : description(std::move(description_)), remedies(std::move(remedies_)), subject(subject_) {}
+
     // What is wrong, in words that hold in every front end. A full sentence (ending in '.')
     // is followed by the remedies as a new sentence; otherwise they follow a colon.
     std::string description;
     std::vector<Remedy> remedies;
+    // For a parameter's value that is refused: the description is the requirement ("must be
+    // at least 1."), preceded by the parameter's name in the front end's terms.
+    std::optional<Parameter> subject;
 
+    static Problem aboutParameter(Parameter p, std::string requirement) { return {std::move(requirement), {}, p}; }
     bool suggests(const Remedy& remedy) const;
 };
 

@@ -9,7 +9,7 @@
 
 namespace pcskeleton {
 
-void rejectNonFinite(const PointList& points, const std::string& what, const std::string& advice) {
+void rejectNonFinite(const PointList& points, const std::string& what, Remedy remedy) {
     std::size_t bad = 0, first = 0;
     for (std::size_t i = 0; i < points.size(); ++i) {
         if (!points[i].allFinite()) {
@@ -20,8 +20,8 @@ void rejectNonFinite(const PointList& points, const std::string& what, const std
     if (bad > 0) {
         std::ostringstream msg;
         msg << bad << " of " << points.size() << ' ' << what
-            << " have NaN or infinite coordinates (first: point " << first << "). " << advice;
-        throw InvalidInput(msg.str());
+            << " have NaN or infinite coordinates (first: point " << first << ").";
+        throw InvalidInput(msg.str(), {remedy});
     }
 }
 
@@ -86,7 +86,7 @@ Eigen::AlignedBox3d boundingBox(const PointList& points) {
 
 NormalizedCloud normalizeCloud(const PointList& input, std::size_t minimumUniquePoints) {
     if (input.empty()) throw InvalidInput("The point layer is empty.");
-    rejectNonFinite(input, "points", "Remove them first (e.g. Filters > Cleaning and Repairing).");
+    rejectNonFinite(input, "points", Remedy::take(Step::RemoveNonFinitePoints));
 
     NormalizedCloud cloud;
     mergeExactDuplicates(input, cloud);
@@ -95,8 +95,8 @@ NormalizedCloud normalizeCloud(const PointList& input, std::size_t minimumUnique
         msg << "Too few points: " << cloud.points.size() << " distinct points";
         if (cloud.points.size() != input.size()) msg << " (" << input.size() << " with duplicates)";
         msg << ", at least " << minimumUniquePoints
-            << " are needed (k nearest neighbours + 1). Lower k or use a denser cloud.";
-        throw InvalidInput(msg.str());
+            << " are needed (k nearest neighbours + 1).";
+        throw InvalidInput(msg.str(), {Remedy::lower(Parameter::NeighbourCount)});
     }
 
     const Eigen::AlignedBox3d box = boundingBox(cloud.points);

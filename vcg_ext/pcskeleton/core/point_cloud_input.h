@@ -41,7 +41,8 @@ Eigen::AlignedBox3d boundingBox(const PointList& points);
 NormalizedCloud normalizeCloud(const PointList& input, std::size_t minimumUniquePoints);
 
 // Throws InvalidInput when a point has a NaN or infinite coordinate, naming how many and
-// the first: "<count> of <n> <what> have NaN or infinite coordinates (first: point i). <advice>"
-void rejectNonFinite(const PointList& points, const std::string& what, const std::string& advice);
+// the first: "<count> of <n> <what> have NaN or infinite coordinates (first: point i).",
+// with `remedy`.
+void rejectNonFinite(const PointList& points, const std::string& what, Remedy remedy);
 
 }  // namespace pcskeleton

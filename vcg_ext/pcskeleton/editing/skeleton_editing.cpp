@@ -1,18 +1,12 @@
 #include "pcskeleton/editing/skeleton_editing.h"
 
+#include "pcskeleton/internal/counted.h"
+
 #include <algorithm>
 #include <functional>
 #include <numeric>
 
 namespace pcskeleton {
-
-namespace {
-
-std::string countOf(std::size_t n, const char* what) {
-    return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
-}
-
-}  // namespace
 
 std::array<int, 2> exactlyTwoNodes(const std::vector<int>& nodes, const std::string& purpose) {
     if (nodes.size() != 2) {
@@ -50,7 +44,7 @@ SkeletonGraph SkeletonEditor::skeleton() const {
 void SkeletonEditor::checkNode(int node) const {
     if (node < 0 || node >= static_cast<int>(current_.graph.nodeCount())) {
         throw InvalidInput("Node " + std::to_string(node) + " does not exist (the skeleton has " +
-                           countOf(current_.graph.nodeCount(), "node") + ").");
+                           counted(current_.graph.nodeCount(), "node") + ").");
     }
 }
 
@@ -60,7 +54,7 @@ std::vector<int> SkeletonEditor::checkedNodes(std::vector<int> nodes, std::size_
     std::sort(nodes.begin(), nodes.end());
     nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
     if (nodes.size() < atLeast) {
-        throw InvalidInput(std::string("To ") + operation + ", select at least " + countOf(atLeast, "node") +
+        throw InvalidInput(std::string("To ") + operation + ", select at least " + counted(atLeast, "node") +
                            " (" + std::to_string(nodes.size()) + " selected).");
     }
     return nodes;
@@ -105,7 +99,7 @@ void SkeletonEditor::moveNodes(const std::vector<int>& nodes, const Point& offse
     const std::vector<int> moved = checkedNodes(nodes, 1, "move nodes");
     if (!offset.allFinite()) throw InvalidInput("Cannot move nodes by a non-finite offset.");
     State next = current_;
-    next.what = "move " + countOf(moved.size(), "node");
+    next.what = "move " + counted(moved.size(), "node");
     for (int n : moved) next.graph.nodes[n] += offset;
     commit(std::move(next));
 }
@@ -113,7 +107,7 @@ void SkeletonEditor::moveNodes(const std::vector<int>& nodes, const Point& offse
 void SkeletonEditor::deleteNodes(const std::vector<int>& nodes) {
     const std::vector<int> deleted = checkedNodes(nodes, 1, "delete nodes");
     State next = current_;
-    next.what = "delete " + countOf(deleted.size(), "node");
+    next.what = "delete " + counted(deleted.size(), "node");
     std::vector<bool> doomed(current_.graph.nodeCount(), false);
     for (int n : deleted) doomed[n] = true;
     removeNodes(next, doomed);
@@ -150,7 +144,7 @@ void SkeletonEditor::connect(int a, int b) {
 int SkeletonEditor::mergeNodes(const std::vector<int>& nodes) {
     const std::vector<int> merged = checkedNodes(nodes, 2, "merge nodes");
     State next = current_;
-    next.what = "merge " + countOf(merged.size(), "node");
+    next.what = "merge " + counted(merged.size(), "node");
     SkeletonGraph& g = next.graph;
 
     // The lowest of the merged indices survives and becomes the merged node, so removing the
@@ -218,7 +212,7 @@ void SkeletonEditor::changeRadii(const std::vector<int>& nodes, const std::strin
                                  const std::function<double(double)>& newRadius) {
     const std::vector<int> changed = checkedNodes(nodes, 1, (verb + " a radius").c_str());
     State next = current_;
-    next.what = verb + " the radius of " + countOf(changed.size(), "node");
+    next.what = verb + " the radius of " + counted(changed.size(), "node");
     for (int n : changed) next.graph.radii[n] = newRadius(next.graph.radii[n]);
     commit(std::move(next));
 }

@@ -2,6 +2,7 @@
 
 #include <CGAL/Fuzzy_sphere.h>
 #include <CGAL/Kd_tree.h>
+#include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_3.h>
 #include <CGAL/Search_traits_adapter.h>
 #include <CGAL/Simple_cartesian.h>
@@ -18,7 +19,8 @@ using Kernel = CGAL::Simple_cartesian<double>;
 using Point3 = Kernel::Point_3;
 using PointMap = CGAL::Pointer_property_map<Point3>::type;
 using SearchTraits = CGAL::Search_traits_adapter<std::size_t, PointMap, CGAL::Search_traits_3<Kernel>>;
-using KdTree = CGAL::Kd_tree<SearchTraits>;
+using NeighbourSearch = CGAL::Orthogonal_k_neighbor_search<SearchTraits>;
+using KdTree = NeighbourSearch::Tree;
 using Sphere = CGAL::Fuzzy_sphere<SearchTraits>;
 
 Point3 toCgal(const Point& p) { return Point3(p.x(), p.y(), p.z()); }
@@ -30,7 +32,7 @@ struct PointIndex::Tree {
           pointMap(cgalPoints.data()),
           tree(boost::counting_iterator<std::size_t>(0), boost::counting_iterator<std::size_t>(cgalPoints.size()),
                KdTree::Splitter(), SearchTraits(pointMap)) {
-        tree.build();
+        tree.build();  // now, not lazily at the first query: queries may run in parallel
     }
     static std::vector<Point3> makePoints(const PointList& points) {
         std::vector<Point3> result;
@@ -52,6 +54,13 @@ void PointIndex::withinRadius(const Point& centre, double radius, std::vector<in
     std::vector<std::size_t> hits;
     tree_->tree.search(std::back_inserter(hits), query);
     found.assign(hits.begin(), hits.end());
+}
+
+void PointIndex::nearest(const Point& centre, int k, std::vector<int>& found) const {
+    found.clear();
+    const NeighbourSearch search(tree_->tree, toCgal(centre), unsigned(k), 0.0, true,
+                                 NeighbourSearch::Distance(tree_->pointMap));
+    for (const auto& hit : search) found.push_back(int(hit.first));
 }
 
 }  // namespace pcskeleton

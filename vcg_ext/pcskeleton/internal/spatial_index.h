@@ -1,5 +1,5 @@
-// Radius queries on a fixed point list (CGAL's kd-tree), for the steps that need them
-// after the 1-rings (sampling the contracted points).
+// Nearest-neighbour and radius queries on a fixed point list (CGAL's k-d tree): the
+// k nearest neighbours of the 1-rings, the balls of the thinning's sampling.
 #pragma once
 
 #include "pcskeleton/core/point_cloud_input.h"
@@ -17,8 +17,14 @@ public:
     PointIndex(const PointIndex&) = delete;
     PointIndex& operator=(const PointIndex&) = delete;
 
+    // Queries are const and safe to run from several threads at once.
+
     // Replaces `found` with the indices of the points within `radius` of `centre`.
     void withinRadius(const Point& centre, double radius, std::vector<int>& found) const;
+
+    // Replaces `found` with the indices of the `k` points nearest to `centre`, nearest first
+    // (a point at `centre` itself included).
+    void nearest(const Point& centre, int k, std::vector<int>& found) const;
 
 private:
     struct Tree;

@@ -1,5 +1,7 @@
 #include "pcskeleton/reconstruction/iso_surface.h"
 
+#include "pcskeleton/internal/counted.h"
+
 #include <vcg/complex/complex.h>
 
 #include <vcg/complex/algorithms/clean.h>
@@ -100,8 +102,7 @@ SurfaceTopology analyseSurface(const TriangleMesh& mesh) {
 }
 
 std::string describe(const SurfaceTopology& t) {
-    std::string text = std::to_string(t.components) + (t.components == 1 ? " component, genus " : " components, genus ") +
-                       std::to_string(t.genus) + ", ";
+    std::string text = counted(std::size_t(t.components), "component") + ", genus " + std::to_string(t.genus) + ", ";
     if (t.closedManifold())
         text += "closed 2-manifold";
     else

@@ -1,12 +1,12 @@
 #include "pcskeleton/reconstruction/skeleton_reconstruction.h"
 
+#include "pcskeleton/internal/stopwatch.h"
 #include "pcskeleton/reconstruction/field_fitting.h"
 #include "pcskeleton/skeleton/skeleton_distance.h"
 
 #include <Eigen/Geometry>
 #include <unistd.h>
 
-#include <chrono>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -15,8 +15,6 @@ namespace pcskeleton {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 constexpr int kPaperResolution = 64;          // the paper's grid: 2^6 cells on the longest side
 constexpr int kDistanceResolution = 64;       // distances to the skeleton are computed exactly up to here
@@ -34,12 +32,12 @@ struct Frame {
 
 void checkInputs(const PointList& points, const SkeletonGraph& skeleton) {
     if (points.empty()) throw InvalidInput("The point layer is empty: reconstruction needs the surface samples.");
-    rejectNonFinite(points, "points", "Remove them (e.g. Filters > Cleaning and Repairing) and try again.");
+    rejectNonFinite(points, "points", Remedy::take(Step::RemoveNonFinitePoints));
     if (skeleton.nodes.empty())
-        throw InvalidInput("The skeleton has no nodes. Compute one first (Filters > Point Set > Compute Curve Skeleton).");
-    rejectNonFinite(skeleton.nodes, "skeleton nodes", "Fix or remove them in Edit Skeleton.");
+        throw InvalidInput("The skeleton has no nodes.", {Remedy::take(Step::ComputeSkeleton)});
+    rejectNonFinite(skeleton.nodes, "skeleton nodes", Remedy::take(Step::DeleteNodes));
     if (skeleton.radii.size() != skeleton.nodes.size())
-        throw InvalidInput("The skeleton layer has no radius per node; compute the skeleton with this plugin.");
+        throw InvalidInput("The skeleton has no radius per node.", {Remedy::take(Step::ComputeSkeleton)});
     int missing = 0, first = -1;
     for (std::size_t n = 0; n < skeleton.radii.size(); ++n)
         if (!isPositiveFinite(skeleton.radii[n]) && missing++ == 0) first = int(n);
@@ -47,8 +45,8 @@ void checkInputs(const PointList& points, const SkeletonGraph& skeleton) {
         throw InvalidInput(std::to_string(missing) + " of " + std::to_string(skeleton.nodeCount()) +
                            " skeleton nodes have no radius (zero, negative or not a number; first: node " +
                            std::to_string(first) +
-                           "). The radius is the field's depth inside the shape: set it with Edit Skeleton (+/-) "
-                           "or Filters > Point Set > Skeleton: Set Radius of Selected Nodes.");
+                           "). The radius is the field's depth inside the shape.",
+                           {Remedy::take(Step::SetNodeRadii)});
     const std::string violation = invariantViolation(skeleton);
     if (!violation.empty()) throw InvalidInput("The skeleton is not valid: " + violation);
 }
@@ -178,25 +176,26 @@ std::size_t closeAtBoundary(const FieldGrid& grid, std::vector<double>& values) 
 }  // namespace
 
 void checkReconstructionParameters(const ReconstructionParameters& p) {
-    auto require = [](bool ok, const std::string& message) {
-        if (!ok) throw InvalidInput(message);
+    auto require = [](bool ok, Parameter parameter, const std::string& requirement) {
+        if (!ok) throw InvalidInput(Problem::aboutParameter(parameter, requirement));
     };
-    require(isPositiveFinite(p.smoothWeight), "The smoothness weight must be positive.");
-    require(isPositiveFinite(p.surfaceWeight), "The surface weight must be positive: the points place the surface.");
-    require(p.skeletonWeight >= 0 && std::isfinite(p.skeletonWeight), "The skeleton weight must be 0 or more.");
-    require(p.outsideWeight >= 0 && std::isfinite(p.outsideWeight), "The outside weight must be 0 or more.");
-    require(p.outsideRadii > 1 && std::isfinite(p.outsideRadii),
-            "K (outside distance, in radii) must be more than 1: the outside starts beyond the skeleton's tube.");
-    require(p.resolution >= kMinimumResolution && p.resolution <= kMaximumResolution,
-            "The grid resolution must be between " + std::to_string(kMinimumResolution) + " and " +
-                std::to_string(kMaximumResolution) + " cells.");
+    require(isPositiveFinite(p.smoothWeight), Parameter::SmoothWeight, "must be positive.");
+    require(isPositiveFinite(p.surfaceWeight), Parameter::SurfaceWeight,
+            "must be positive: the points place the surface.");
+    require(p.skeletonWeight >= 0 && std::isfinite(p.skeletonWeight), Parameter::SkeletonWeight, "must be 0 or more.");
+    require(p.outsideWeight >= 0 && std::isfinite(p.outsideWeight), Parameter::OutsideWeight, "must be 0 or more.");
+    require(p.outsideRadii > 1 && std::isfinite(p.outsideRadii), Parameter::OutsideDistance,
+            "must be more than 1: the outside starts beyond the skeleton's tube.");
+    require(p.resolution >= kMinimumResolution && p.resolution <= kMaximumResolution, Parameter::Resolution,
+            "must be between " + std::to_string(kMinimumResolution) + " and " + std::to_string(kMaximumResolution) +
+                " cells.");
 }
 
 Reconstruction reconstructFromSkeleton(const PointList& points, const SkeletonGraph& skeleton,
                                        const ReconstructionParameters& parameters, const ProgressCallback& progress) {
     checkReconstructionParameters(parameters);
     checkInputs(points, skeleton);
-    const Clock::time_point start = Clock::now();
+    const Stopwatch setup;
     Reconstruction result;
     ReconstructionReport& summary = result.report;
     const double outsideRadii = parameters.outsideRadii;
@@ -219,11 +218,13 @@ Reconstruction reconstructFromSkeleton(const PointList& points, const SkeletonGr
     farText << int(std::round(100 * farShare)) << "% of the points are farther than K = " << outsideRadii
             << " radii from the skeleton";
     if (farShare > 0.5)
-        throw InvalidInput(farText.str() +
-                           ": the skeleton does not describe this point layer. Choose the skeleton computed from these "
-                           "points, or raise the node radii or K.");
+        throw InvalidInput(farText.str() + ": the skeleton does not describe this point layer.",
+                           {Remedy::take(Step::ComputeSkeleton), Remedy::take(Step::SetNodeRadii),
+                            Remedy::raise(Parameter::OutsideDistance)});
     if (farShare > 0.05)
-        summary.warnings.push_back(farText.str() + ": the surface there only follows the points (raise K or the radii).");
+        summary.warnings.push_back({ReconstructionWarning::Kind::PointsFarFromSkeleton,
+                                    {farText.str() + ": the surface there only follows the points",
+                                     {Remedy::raise(Parameter::OutsideDistance), Remedy::take(Step::SetNodeRadii)}}});
 
     FieldProblem problem;
     problem.grid = grid;
@@ -253,9 +254,9 @@ Reconstruction reconstructFromSkeleton(const PointList& points, const SkeletonGr
                 problem.nodeValue[n] = std::max(skeletonField.cylindrical[n], grid.spacing);
                 summary.outsideNodes += !boundary;
             }
-    summary.setupSeconds = secondsSince(start);
+    summary.setupSeconds = setup.seconds();
 
-    const Clock::time_point solveStart = Clock::now();
+    const Stopwatch solveTime;
     FieldSolveReport solve;
     std::vector<double> field =
         solveField(problem, skeletonField.cylindrical, FieldSolverOptions{}, solve, progressRange(progress, 10, 85));
@@ -264,29 +265,34 @@ Reconstruction reconstructFromSkeleton(const PointList& points, const SkeletonGr
     summary.iterations = solve.iterations;
     summary.relativeResidual = solve.relativeResidual;
     summary.converged = solve.converged;
-    summary.solveSeconds = secondsSince(solveStart);
+    summary.solveSeconds = solveTime.seconds();
     if (!solve.converged)
-        summary.warnings.push_back("the solver stopped before reaching its tolerance; the surface may be rough.");
+        summary.warnings.push_back({ReconstructionWarning::Kind::SolverNotConverged,
+                                    {"the solver stopped before reaching its tolerance; the surface may be rough.", {}}});
 
     report(progress, 85, "Extracting the surface");
-    const Clock::time_point extractionStart = Clock::now();
+    const Stopwatch extraction;
     if (const std::size_t opened = closeAtBoundary(grid, field))
-        summary.warnings.push_back("the surface reached the edge of the grid at " + std::to_string(opened) +
-                                   " nodes and was closed there (raise the outside weight).");
+        summary.warnings.push_back({ReconstructionWarning::Kind::SurfaceReachedGridEdge,
+                                    {"the surface reached the edge of the grid at " + std::to_string(opened) +
+                                         " nodes and was closed there",
+                                     {Remedy::raise(Parameter::OutsideWeight)}}});
     result.mesh = extractZeroLevelSet(grid, field);
     if (result.mesh.triangles.empty())
-        throw InvalidInput("The field has no zero crossing: no surface was found. Check that the skeleton radii "
-                           "are close to the shape's thickness and the surface weight is not 0.");
+        throw InvalidInput("The field has no zero crossing: no surface was found. The skeleton radii must be close to "
+                           "the shape's thickness.",
+                           {Remedy::take(Step::SetNodeRadii), Remedy::raise(Parameter::SurfaceWeight)});
     for (Point& v : result.mesh.vertices) v = frame.toInput(v);
     summary.topology = analyseSurface(result.mesh);
     if (!summary.topology.closedManifold())
-        summary.warnings.push_back("the surface is not a closed 2-manifold: " + describe(summary.topology));
-    summary.extractionSeconds = secondsSince(extractionStart);
+        summary.warnings.push_back({ReconstructionWarning::Kind::NotClosedManifold,
+                                    {"the surface is not a closed 2-manifold: " + describe(summary.topology), {}}});
+    summary.extractionSeconds = extraction.seconds();
     report(progress, 100, "Surface reconstructed");
     return result;
 }
 
-std::string describe(const ReconstructionReport& r) {
+std::string describeFindings(const ReconstructionReport& r) {
     std::ostringstream text;
     text.precision(3);
     text << "grid " << r.gridNodes[0] << " x " << r.gridNodes[1] << " x " << r.gridNodes[2] << " nodes (" << r.unknowns
@@ -298,8 +304,13 @@ std::string describe(const ReconstructionReport& r) {
          << "time: setup " << r.setupSeconds << " s, solve " << r.solveSeconds << " s, surface "
          << r.extractionSeconds << " s\n"
          << "result: " << describe(r.topology);
-    for (const std::string& warning : r.warnings) text << "\nwarning: " << warning;
     return text.str();
+}
+
+std::string describe(const ReconstructionReport& r, const Terms& terms) {
+    std::string text = describeFindings(r);
+    for (const ReconstructionWarning& w : r.warnings) text += "\nwarning: " + describe(w.problem, terms);
+    return text;
 }
 
 }  // namespace pcskeleton

@@ -16,6 +16,7 @@
 #pragma once
 
 #include "pcskeleton/reconstruction/iso_surface.h"
+#include "pcskeleton/core/advice.h"
 #include "pcskeleton/core/progress.h"
 #include "pcskeleton/skeleton/skeleton_graph.h"
 
@@ -40,6 +41,12 @@ constexpr int kMaximumResolution = 512;
 // Throws InvalidInput naming the first unusable parameter.
 void checkReconstructionParameters(const ReconstructionParameters& parameters);
 
+struct ReconstructionWarning {
+    enum class Kind { PointsFarFromSkeleton, SolverNotConverged, SurfaceReachedGridEdge, NotClosedManifold };
+    Kind kind;
+    Problem problem;
+};
+
 struct ReconstructionReport {
     std::array<int, 3> gridNodes{};
     std::size_t unknowns = 0;
@@ -50,10 +57,12 @@ struct ReconstructionReport {
     bool converged = false;
     double setupSeconds = 0, solveSeconds = 0, extractionSeconds = 0;
     SurfaceTopology topology;
-    std::vector<std::string> warnings;  // things the user should look at
+    std::vector<ReconstructionWarning> warnings;  // things the user should look at
 };
-// Several lines for a log: grid, unknowns, solver, time, topology of the result, warnings.
-std::string describe(const ReconstructionReport& report);
+// Several lines for a log: grid, unknowns, solver, time, topology of the result.
+std::string describeFindings(const ReconstructionReport& report);
+// The findings, then one "warning: ..." line per warning, its remedies worded in `terms`.
+std::string describe(const ReconstructionReport& report, const Terms& terms = libraryTerms());
 
 struct Reconstruction {
     TriangleMesh mesh;  // input frame, closed, outward-facing

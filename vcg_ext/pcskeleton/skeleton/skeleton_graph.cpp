@@ -1,5 +1,6 @@
 #include "pcskeleton/skeleton/skeleton_graph.h"
 
+#include "pcskeleton/internal/counted.h"
 #include "pcskeleton/internal/disjoint_sets.h"
 
 #include <Eigen/Geometry>
@@ -8,12 +9,6 @@
 #include <sstream>
 
 namespace pcskeleton {
-
-namespace {
-
-const char* plural(int n, const char* one, const char* many) { return n == 1 ? one : many; }
-
-}  // namespace
 
 std::vector<int> nodeDegrees(std::size_t nodeCount, const std::vector<Edge>& edges) {
     std::vector<int> degree(nodeCount, 0);
@@ -48,12 +43,9 @@ SkeletonTopology analyseTopology(std::size_t nodeCount, const std::vector<Edge>&
 }
 
 std::string describe(const SkeletonTopology& t) {
-    std::ostringstream s;
-    s << t.nodes << plural(t.nodes, " node, ", " nodes, ") << t.edges << plural(t.edges, " edge, ", " edges, ")
-      << t.components << plural(t.components, " component, ", " components, ") << t.cycles
-      << plural(t.cycles, " cycle, ", " cycles, ") << t.tips << plural(t.tips, " tip, ", " tips, ") << t.junctions
-      << plural(t.junctions, " junction", " junctions");
-    return s.str();
+    return counted(std::size_t(t.nodes), "node") + ", " + counted(std::size_t(t.edges), "edge") + ", " +
+           counted(std::size_t(t.components), "component") + ", " + counted(std::size_t(t.cycles), "cycle") + ", " +
+           counted(std::size_t(t.tips), "tip") + ", " + counted(std::size_t(t.junctions), "junction");
 }
 
 void normalizeEdges(std::vector<Edge>& edges) {
