@@ -3,10 +3,50 @@
 #include <Eigen/CholmodSupport>
 #include <Eigen/SparseCholesky>
 
+#include <dlfcn.h>
+
 #include <algorithm>
 #include <vector>
 
 namespace pcskeleton {
+
+namespace {
+
+// CHOLMOD's supernodal factorisation calls BLAS, and OpenBLAS divides that work by its
+// thread count with a different rounding for each: 1 and 2 threads gave different
+// skeleton files. One BLAS thread during our factorisations keeps results byte-identical
+// on every machine (the contraction's 10K-100K-point systems have small supernodes, where
+// BLAS threads gain little). OpenBLAS is reached through the loaded BLAS library (it may
+// be local to a plugin); any other BLAS is left alone.
+class OneBlasThread {
+public:
+    OneBlasThread() {
+        for (const char* library : {"libblas.so.3", "libopenblas.so.0"}) {
+            void* handle = dlopen(library, RTLD_LAZY | RTLD_NOLOAD);
+            if (!handle) continue;
+            get_ = reinterpret_cast<int (*)()>(dlsym(handle, "openblas_get_num_threads"));
+            set_ = reinterpret_cast<void (*)(int)>(dlsym(handle, "openblas_set_num_threads"));
+            dlclose(handle);  // still loaded: NOLOAD only counted a reference
+            if (get_ && set_) break;
+        }
+        if (get_ && set_) {
+            previous_ = get_();
+            set_(1);
+        }
+    }
+    ~OneBlasThread() {
+        if (get_ && set_) set_(previous_);
+    }
+    OneBlasThread(const OneBlasThread&) = delete;
+    OneBlasThread& operator=(const OneBlasThread&) = delete;
+
+private:
+    int (*get_)() = nullptr;
+    void (*set_)(int) = nullptr;
+    int previous_ = 1;
+};
+
+}  // namespace
 
 struct SparseSpdSolver::Impl {
     LinearSolver kind;
@@ -34,6 +74,7 @@ bool SparseSpdSolver::factorize(const Matrix& m) {
     const bool analyse = !impl_->samePattern(m);
     if (analyse) impl_->rememberPattern(m);
     if (impl_->kind == LinearSolver::Cholmod) {
+        const OneBlasThread deterministic;
         if (analyse) {
             // One ordering instead of CHOLMOD's default trial of several. Measured on
             // sampled surfaces: AMD is as good below ~50K unknowns; above, METIS gives
@@ -52,7 +93,10 @@ bool SparseSpdSolver::factorize(const Matrix& m) {
 }
 
 Eigen::MatrixXd SparseSpdSolver::solve(const Eigen::MatrixXd& rhs) const {
-    if (impl_->kind == LinearSolver::Cholmod) return impl_->cholmod.solve(rhs);
+    if (impl_->kind == LinearSolver::Cholmod) {
+        const OneBlasThread deterministic;
+        return impl_->cholmod.solve(rhs);
+    }
     return impl_->simplicial.solve(rhs);
 }
 
