@@ -15,6 +15,14 @@
 // time of the whole pipeline.
 //
 // usage: bench_robustness [POINTS]      default 6000 points per clean sample
+//        bench_robustness [POINTS] --paper
+//                                       the paper's pipeline (no outlier detection,
+//                                       refinement or tip extension) instead of the default
+//        bench_robustness [POINTS] --no-refine
+//                                       the default pipeline without refinement
+//        bench_robustness [POINTS] --outliers [ISOLATION CLUSTER LOCAL]
+//                                       outlier detection alone: surface points flagged,
+//                                       outliers found, per condition
 //        bench_robustness --write SHAPE CONDITION FILE [POINTS]
 //                                       writes one case's cloud (.xyz or .ply), e.g. for
 //                                       the README's pictures
@@ -25,6 +33,7 @@
 #include <pcskeleton/io/skeleton_io.h>
 #include "support/scan_simulation.h"
 #include <pcskeleton/analysis/tip_extension.h>
+#include <pcskeleton/core/outlier_detection.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
@@ -32,7 +41,10 @@
 #include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <algorithm>
+#include <array>
 #include <chrono>
+#include <random>
 #include <cstdlib>
 #include <filesystem>
 #include <functional>
@@ -170,14 +182,31 @@ bool addModel(std::vector<Subject>& subjects, const std::filesystem::path& folde
     s.cycles = cycles;
     s.tips = tips;
     s.area = CGAL::to_double(CGAL::Polygon_mesh_processing::area(*mesh));
-    s.sample = [mesh](std::size_t n, std::uint32_t seed) {
-        std::vector<Kernel::Point_3> samples;
-        CGAL::Polygon_mesh_processing::sample_triangle_mesh(
-            *mesh, std::back_inserter(samples),
-            CGAL::parameters::number_of_points_on_faces(n).do_sample_vertices(false).do_sample_edges(false).random_seed(
-                seed));
+    // Uniform on the faces, with our own seeded generator: CGAL's sample_triangle_mesh gave
+    // different samples from run to run (its random_seed did not make it reproducible).
+    auto triangles = std::make_shared<std::vector<std::array<Point, 3>>>();
+    for (const auto f : mesh->faces()) {
+        std::array<Point, 3> t;
+        int c = 0;
+        for (const auto v : CGAL::vertices_around_face(mesh->halfedge(f), *mesh)) {
+            const Kernel::Point_3& p = mesh->point(v);
+            t[c++] = Point(p.x(), p.y(), p.z());
+        }
+        triangles->push_back(t);
+    }
+    s.sample = [triangles](std::size_t n, std::uint32_t seed) {
+        std::vector<double> cumulative;
+        double total = 0.0;
+        for (const auto& t : *triangles) cumulative.push_back(total += 0.5 * (t[1] - t[0]).cross(t[2] - t[0]).norm());
+        std::mt19937 random(seed);
+        std::uniform_real_distribution<double> unit(0.0, 1.0);
         PointList points;
-        for (const auto& p : samples) points.emplace_back(p.x(), p.y(), p.z());
+        for (std::size_t i = 0; i < n; ++i) {
+            const auto& t = (*triangles)[std::size_t(
+                std::lower_bound(cumulative.begin(), cumulative.end(), unit(random) * total) - cumulative.begin())];
+            const double a = std::sqrt(unit(random)), b = unit(random);
+            points.push_back((1 - a) * t[0] + a * (1 - b) * t[1] + a * b * t[2]);
+        }
         return points;
     };
     if (CGAL::is_closed(*mesh)) {
@@ -283,10 +312,11 @@ double tipGap(const SkeletonGraph& skeleton, const PointList& ends) {
     return sum / ends.size();
 }
 
-Row measure(const Subject& subject, const Condition& condition, std::size_t n) {
+Row measure(const Subject& subject, const Condition& condition, std::size_t n, const SkeletonParameters& pipeline) {
     const PointList cloud = condition.make(subject, n, 11);
     const double diagonal = boundingBox(subject.sample(n, 11)).diagonal().norm();
-    SkeletonParameters parameters;
+    // Tip extension is applied here, after the run, so that both tip gaps can be measured.
+    SkeletonParameters parameters = pipeline;
     parameters.thinning.extendTips = false;
     const auto start = std::chrono::steady_clock::now();
     const SkeletonResult result = computeCurveSkeleton(cloud, parameters);
@@ -294,7 +324,7 @@ Row measure(const Subject& subject, const Condition& condition, std::size_t n) {
     extendTips(extended, cloud, result.quality.nodeSpacing);
     Row row;
     row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const SkeletonGraph& skeleton = ThinningParameters().extendTips ? extended : result.skeleton;
+    const SkeletonGraph& skeleton = pipeline.thinning.extendTips ? extended : result.skeleton;
 
     row.points = int(cloud.size());
     const SkeletonTopology topology = analyseTopology(skeleton);
@@ -359,12 +389,52 @@ int writeCase(const std::vector<Subject>& subjects, const std::string& shape, co
     return 2;
 }
 
-int main(int argc, char** argv) {
-    if (argc >= 5 && std::string(argv[1]) == "--write") {
-        const std::size_t n = argc > 5 ? std::strtoull(argv[5], nullptr, 10) : 6000;
-        return writeCase(knownShapes(), argv[2], argv[3], argv[4], n);
+// Outlier detection alone, per condition: the share of surface points wrongly flagged and,
+// where outliers were added (appended after the clean sample), the share of them found.
+int outlierDetection(const std::vector<Subject>& subjects, std::size_t n, const OutlierParameters& parameters) {
+    std::printf("Outlier detection, isolation factor %.1f, cluster share %.3f, %zu points per clean sample\n",
+                parameters.isolationFactor, parameters.clusterShare, n);
+    std::printf("%-16s %22s %22s %8s\n", "condition", "surface points flagged", "outliers found", "time");
+    for (const Condition& condition : conditions()) {
+        std::size_t surface = 0, wrong = 0, outliers = 0, found = 0, worstShape = 0;
+        double seconds = 0, worst = 0;
+        for (std::size_t s = 0; s < subjects.size(); ++s) {
+            const PointList cloud = condition.make(subjects[s], n, 11);
+            const bool added = std::string(condition.name).rfind("outliers", 0) == 0;
+            const std::size_t clean = added ? subjects[s].sample(n, 11).size() : cloud.size();
+            const auto start = std::chrono::steady_clock::now();
+            const std::vector<char> flagged = findOutliers(cloud, parameters);
+            seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            std::size_t wrongHere = 0;
+            for (std::size_t i = 0; i < cloud.size(); ++i) {
+                if (i < clean) wrongHere += flagged[i];
+                else found += flagged[i];
+            }
+            surface += clean, wrong += wrongHere, outliers += cloud.size() - clean;
+            if (double(wrongHere) / clean > worst) worst = double(wrongHere) / clean, worstShape = s;
+        }
+        std::printf("%-16s %8.3f%% (worst %5.2f%%) %21s %7.2fs   worst: %s\n", condition.name, 100.0 * wrong / surface,
+                    100.0 * worst, outliers ? (number(100.0 * found / outliers, "%.1f") + "%").c_str() : "-",
+                    seconds / subjects.size(), worst > 0 ? subjects[worstShape].name.c_str() : "-");
+        std::fflush(stdout);
     }
-    const std::size_t n = argc > 1 ? std::strtoull(argv[1], nullptr, 10) : 6000;
+    return 0;
+}
+
+int main(int argc, char** argv) {
+    // bench_robustness [POINTS] [--paper] [--no-refine] | --outliers [ISOLATION CLUSTER LOCAL] | --write SHAPE CONDITION FILE
+    std::vector<std::string> args(argv + 1, argv + argc);
+    const bool write = !args.empty() && args[0] == "--write" && args.size() >= 4;
+    const bool outliers = std::find(args.begin(), args.end(), "--outliers") != args.end();
+    const bool paper = std::find(args.begin(), args.end(), "--paper") != args.end();
+    std::size_t n = 6000;
+    std::vector<double> numbers;
+    for (std::size_t a = write ? 4 : 0; a < args.size(); ++a) {
+        if (args[a].rfind("--", 0) != 0) numbers.push_back(std::atof(args[a].c_str()));
+    }
+    if (!numbers.empty()) n = std::size_t(numbers[0]);
+    SkeletonParameters pipeline = paper ? SkeletonParameters::paper() : SkeletonParameters{};
+    if (std::find(args.begin(), args.end(), "--no-refine") != args.end()) pipeline.thinning.refine = false;
     std::vector<Subject> subjects = knownShapes();
     const std::vector<std::string> models{"elephant", "knot1", "eight", "hand"};
     const std::filesystem::path folder = extractModels(models);
@@ -377,9 +447,17 @@ int main(int argc, char** argv) {
         }
     }
 
-    std::printf("Skeleton robustness, %zu points per clean sample, %ld cores. Distances and gaps in %% of the "
-                "bounding-box diagonal.\n",
-                n, sysconf(_SC_NPROCESSORS_ONLN));
+    if (write) return writeCase(subjects, args[1], args[2], args[3], n);
+    if (outliers) {
+        OutlierParameters parameters;
+        if (numbers.size() > 1) parameters.isolationFactor = numbers[1];
+        if (numbers.size() > 2) parameters.clusterShare = numbers[2];
+        if (numbers.size() > 3) parameters.localFactor = numbers[3];
+        return outlierDetection(subjects, n, parameters);
+    }
+    std::printf("Skeleton robustness, %s pipeline, %zu points per clean sample, %ld cores. Distances and gaps in %% of "
+                "the bounding-box diagonal.\n",
+                paper ? "the paper's" : "the default", n, sysconf(_SC_NPROCESSORS_ONLN));
     std::printf("%-24s %-16s %6s %6s %6s %6s %6s %7s %13s %4s %6s\n", "shape", "condition", "points", "cycles",
                 "tips", "mean d", "max d", "inside", "tip gap", "warn", "time");
     std::map<std::string, Tally> byCondition;
@@ -387,7 +465,7 @@ int main(int argc, char** argv) {
         for (const Condition& condition : conditions()) {
             Row row;
             double peak = 0;
-            if (!runInChild([&] { return measure(subject, condition, n); }, row, peak)) {
+            if (!runInChild([&] { return measure(subject, condition, n, pipeline); }, row, peak)) {
                 std::printf("%-24s %-16s failed\n", subject.name.c_str(), condition.name);
                 continue;
             }

@@ -40,7 +40,11 @@ std::string optionOf(Parameter parameter) {
         case Parameter::MaxIterations: return "--iterations";
         case Parameter::TerminationThreshold: return "--threshold";
         case Parameter::NodeSpacing: return "--radius";
-        case Parameter::Refinement: return "--refine";
+        case Parameter::Refinement: return "refinement (--no-refine turns it off)";
+        case Parameter::OutlierDetection: return "outlier detection (--keep-outliers turns it off)";
+        case Parameter::OutlierIsolation: return "--outlier-isolation";
+        case Parameter::OutlierLocalFactor: return "--outlier-local";
+        case Parameter::OutlierClusterShare: return "--outlier-cluster";
         default: return libraryTerms().parameter(parameter);  // reconstruction: not an option here
     }
 }
@@ -63,6 +67,7 @@ const Terms& commandLineTerms() {
 void printHelp() {
     const ContractionParameters c;
     const ThinningParameters t;
+    const OutlierParameters o;
     std::printf(
         "Usage: pcskeleton INPUT -o OUTPUT [options]\n"
         "\n"
@@ -84,7 +89,8 @@ void printHelp() {
         "Options (default in brackets):\n"
         "  --contracted FILE     also write the contracted points (.ply or .xyz)\n"
         "  --correspondence FILE also write, for each input point, its node's index\n"
-        "                        (one per line, 0-based, in the input's order)\n"
+        "                        (one per line, 0-based, in the input's order; -1 for a\n"
+        "                        point with no node, e.g. an outlier)\n"
         "  --k N                 neighbours whose tangent-plane Delaunay gives each point's\n"
         "                        1-ring [%d = 1.2%% of the points, between 8 and 30]. Raise\n"
         "                        for noisy scans; lower if close parts get connected.\n"
@@ -106,9 +112,24 @@ void printHelp() {
         "  --no-extend-tips      keep the tips where contraction left them (the paper's\n"
         "                        skeleton); by default each limb is extended to the end of\n"
         "                        its tip's points, since contraction shortens limbs\n"
-        "  --refine              remove short spurs and loops smaller than their tube, merge\n"
-        "                        junctions closer than the node spacing [off: it changes the\n"
-        "                        paper's result]. Use it when the report warns of them.\n"
+        "  --no-refine           keep short spurs and loops smaller than their tube, and\n"
+        "                        junctions closer than the node spacing; by default they are\n"
+        "                        removed or merged (noise and misaligned scans leave them).\n"
+        "                        --refine turns it on again after --paper.\n"
+        "  --keep-outliers       contract every point; by default points that do not belong\n"
+        "                        to the sampled surface (isolated points, small sparse\n"
+        "                        clusters) are set aside and get no node (-1 in\n"
+        "                        --correspondence)\n"
+        "  --outlier-isolation F a point whose 8th nearest neighbour is farther than F\n"
+        "                        typical spacings is an outlier [%g]; raise it if sparse\n"
+        "                        parts of the shape are taken for outliers\n"
+        "  --outlier-local G     a point whose 8th nearest neighbour is farther than G times\n"
+        "                        that of its neighbours (their upper quartile) is an outlier\n"
+        "                        [%g]; lower finds outliers closer to the surface\n"
+        "  --outlier-cluster S   groups of points holding less than this share of the cloud\n"
+        "                        are outlier clusters [%g]; 0 keeps every group\n"
+        "  --paper               the paper's pipeline exactly: the same as --keep-outliers\n"
+        "                        --no-refine --no-extend-tips\n"
         "  --report FILE         also write the quality report to FILE\n"
         "  --quiet               no progress and no summary on stderr\n"
         "  -h, --help            this text\n"
@@ -117,7 +138,7 @@ void printHelp() {
         "printed on one line), 2 on a command-line error.\n",
         c.neighbourCount, c.initialContractionWeight, c.initialAttractionWeight, c.contractionScale,
         c.maxContractionWeight, c.maxAttractionWeight, c.laplacianRowLimit, c.maxIterations, c.terminationThreshold,
-        t.sampleRadius);
+        t.sampleRadius, o.isolationFactor, o.localFactor, o.clusterShare);
 }
 
 double parseNumber(const std::string& option, const std::string& text) {
@@ -153,6 +174,9 @@ bool parseArguments(int argc, char** argv, Options& options) {
         {"--iterations", [&](const std::string& v) { c.maxIterations = parseInteger("--iterations", v); }},
         {"--threshold", [&](const std::string& v) { c.terminationThreshold = parseNumber("--threshold", v); }},
         {"--radius", [&](const std::string& v) { options.parameters.thinning.sampleRadius = parseNumber("--radius", v); }},
+        {"--outlier-isolation", [&](const std::string& v) { c.outliers.isolationFactor = parseNumber("--outlier-isolation", v); }},
+        {"--outlier-local", [&](const std::string& v) { c.outliers.localFactor = parseNumber("--outlier-local", v); }},
+        {"--outlier-cluster", [&](const std::string& v) { c.outliers.clusterShare = parseNumber("--outlier-cluster", v); }},
     };
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
@@ -161,8 +185,15 @@ bool parseArguments(int argc, char** argv, Options& options) {
             options.quiet = true;
         } else if (arg == "--no-extend-tips") {
             options.parameters.thinning.extendTips = false;
-        } else if (arg == "--refine") {
-            options.parameters.thinning.refine = true;
+        } else if (arg == "--refine" || arg == "--no-refine") {
+            options.parameters.thinning.refine = arg == "--refine";
+        } else if (arg == "--keep-outliers") {
+            c.outliers.detect = false;
+        } else if (arg == "--paper") {
+            const SkeletonParameters paper = SkeletonParameters::paper();
+            c.outliers.detect = paper.contraction.outliers.detect;
+            options.parameters.thinning.refine = paper.thinning.refine;
+            options.parameters.thinning.extendTips = paper.thinning.extendTips;
         } else if (auto option = withValue.find(arg); option != withValue.end()) {
             if (i + 1 >= argc) throw UsageError(arg + " needs a value");
             option->second(argv[++i]);

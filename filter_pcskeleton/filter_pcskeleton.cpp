@@ -38,6 +38,14 @@ const char* const kNeighbourHelp =
     "0 = automatic: 1.2% of the points, between 8 and 30 (the paper's rule). Raise it for noisy scans; "
     "lower it if close-by parts (fingers, claws) get connected.";
 
+void addOutlierParameter(RichParameterList& list) {
+    list.addParam(RichBool("detectOutliers", pcskeleton::OutlierParameters().detect, label(Parameter::OutlierDetection),
+        "Sets aside, before the 1-rings, points that do not belong to the sampled surface: isolated points and "
+        "small sparse clusters, judged against the cloud's own point spacing. They get no node (grey in the "
+        "segments layer) and are counted in the log; the layer itself is not changed. Untick to keep every "
+        "point, as the paper does."));
+}
+
 void addContractionParameters(RichParameterList& list) {
     const pcskeleton::ContractionParameters d;
     list.addParam(RichInt("k", d.neighbourCount, label(Parameter::NeighbourCount), kNeighbourHelp));
@@ -64,6 +72,7 @@ void addContractionParameters(RichParameterList& list) {
     list.addParam(RichFloat("terminationThreshold", float(d.terminationThreshold), label(Parameter::TerminationThreshold),
         "Contraction stops when the total 1-ring size shrank by less than this fraction of its initial value "
         "in the last iteration."));
+    addOutlierParameter(list);
 }
 
 pcskeleton::ContractionParameters readContractionParameters(const RichParameterList& list) {
@@ -77,6 +86,7 @@ pcskeleton::ContractionParameters readContractionParameters(const RichParameterL
     p.laplacianRowLimit = list.getFloat("laplacianRowLimit");
     p.maxIterations = list.getInt("maxIterations");
     p.terminationThreshold = list.getFloat("terminationThreshold");
+    p.outliers.detect = list.getBool("detectOutliers");
     return p;
 }
 
@@ -93,12 +103,20 @@ void addThinningParameters(RichParameterList& list) {
     list.addParam(RichBool("refine", d.refine, label(Parameter::Refinement),
         "Cleans what noise leaves: limbs shorter than the body is thick where they join are absorbed into the "
         "junction, loops smaller than the tube around them collapse to a node, junctions closer than the node "
-        "spacing merge. Off by default because it changes the paper's result; the log's quality report says "
-        "when it would help."));
+        "spacing merge. On by default: on noisy and misaligned scans it removes spurs and false loops. Untick "
+        "for the paper's skeleton."));
     list.addParam(RichBool("addSegmentsLayer", true, "Add a layer of points coloured by node",
         "Adds a copy of the input points, each coloured by the skeleton node it belongs to (the "
         "correspondence), with the node index in the per-vertex attribute pcs_node. The input layer is "
         "not changed."));
+}
+
+// What the thinning filter needs to know of the contraction that made its layer.
+pcskeleton::ContractionParameters contractionOfThinning(const RichParameterList& list) {
+    pcskeleton::ContractionParameters p;
+    p.neighbourCount = list.getInt("k");
+    p.outliers.detect = list.getBool("detectOutliers");
+    return p;
 }
 
 pcskeleton::ThinningParameters readThinningParameters(const RichParameterList& list) {
@@ -322,12 +340,16 @@ void FilterPCSkeletonPlugin::initParameterSet(QAction* action, MeshDocument& md,
             parameters.addParam(RichBool("addContractedLayer", false, "Add the contracted points layer",
                 "Also adds the contracted points as a layer, e.g. to thin them again later with other settings "
                 "(Skeleton from Contracted Points)."));
+            parameters.addParam(RichBool("paperPipeline", false, "The paper's pipeline only",
+                "Exactly the paper's steps: no outlier detection, refinement or tip extension, whatever is ticked "
+                "above. For comparison with the paper and other implementations of it."));
             break;
         case FP_SKELETON_FROM_CONTRACTED:
             parameters.addParam(RichMesh("sourceLayer", likelySourceOf(md, md.mm()), &md, "Original points",
                 "The layer that was contracted: its points give the 1-rings, the node positions and the radii."));
             parameters.addParam(RichInt("k", 0, label(Parameter::NeighbourCount),
                 QString(kNeighbourHelp) + " Use the value the contraction used."));
+            addOutlierParameter(parameters);
             addThinningParameters(parameters);
             break;
         case FP_EXPORT_SKELETON: {
@@ -469,8 +491,14 @@ bool FilterPCSkeletonPlugin::computeSkeleton(MeshDocument& md, const RichParamet
                                              vcg::CallBackPos* cb) {
     MeshModel& source = *md.mm();
     const LayerPoints input = collectPoints(source.cm);
-    const pcskeleton::ContractionParameters settings = readContractionParameters(parameters);
-    const pcskeleton::ThinningParameters thinning = readThinningParameters(parameters);
+    pcskeleton::ContractionParameters settings = readContractionParameters(parameters);
+    pcskeleton::ThinningParameters thinning = readThinningParameters(parameters);
+    if (parameters.getBool("paperPipeline")) {
+        const pcskeleton::SkeletonParameters paper = pcskeleton::SkeletonParameters::paper();
+        settings.outliers = paper.contraction.outliers;
+        thinning = paper.thinning;
+        thinning.sampleRadius = parameters.getFloat("sampleRadius");
+    }
     const pcskeleton::ProgressCallback progress = progressOf(cb);
     pcskeleton::checkThinningParameters(thinning);  // before the contraction, not after it
 
@@ -496,7 +524,7 @@ bool FilterPCSkeletonPlugin::skeletonFromContracted(MeshDocument& md, const Rich
     LayerPoints input;
     const pcskeleton::PointList contracted = readContractedLayer(*md.mm(), source, input);
     const pcskeleton::SkeletonResult result = pcskeleton::skeletonFromContractedPoints(
-        input.points, contracted, parameters.getInt("k"), readThinningParameters(parameters), progressOf(cb));
+        input.points, contracted, contractionOfThinning(parameters), readThinningParameters(parameters), progressOf(cb));
     addSkeletonLayers(md, *source, input, result, parameters.getBool("addSegmentsLayer"));
     return true;
 }

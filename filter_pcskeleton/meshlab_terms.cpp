@@ -21,6 +21,9 @@ QString parameterLabel(Parameter parameter) {
         case Parameter::SkeletonWeight: return "Skeleton weight (w3)";
         case Parameter::OutsideWeight: return "Outside weight (w4)";
         case Parameter::OutsideDistance: return "Outside distance K (radii)";
+        case Parameter::OutlierDetection: return "Detect outliers";
+        case Parameter::OutlierIsolation: return "Outlier isolation (spacings)";
+        case Parameter::OutlierClusterShare: return "Outlier cluster share";
     }
     return {};
 }

@@ -37,6 +37,48 @@ grep -q "^Tip extension: [0-9]* limbs extended" elephant.log || { cat elephant.l
 grep -q "^Warning: Contraction stopped at the iteration limit.*raise --iterations or --sl" knot_one.txt \
   || { cat knot_one.txt; fail "--report lacks the iteration-limit warning in the CLI's terms"; }
 
+# Outliers: 2% of the elephant's points scattered in its box; those set aside get no node
+# (-1) and the skeleton stays a tree (the paper's pipeline gives it false loops here);
+# --paper and --keep-outliers give every point a node.
+/usr/bin/python3 - "$M/elephant.off" elephant_outliers.xyz <<'PY'
+import random, sys
+lines = open(sys.argv[1]).read().split('\n')
+header = [l for l in lines if l.strip() and not l.startswith('#')]
+n = int(header[1].split()[0])
+points = [tuple(map(float, l.split()[:3])) for l in header[2:2 + n]]
+low = [min(p[c] for p in points) for c in range(3)]
+high = [max(p[c] for p in points) for c in range(3)]
+random.seed(7)
+extra = [tuple(random.uniform(low[c], high[c]) for c in range(3)) for _ in range(n // 50)]
+with open(sys.argv[2], 'w') as out:
+    for p in points + extra:
+        out.write('%.6f %.6f %.6f\n' % p)
+PY
+"$PCSKELETON" elephant_outliers.xyz -o elephant_outliers.ply --correspondence elephant_outliers.nodes \
+  2>elephant_outliers.log
+$GRAPH check elephant_outliers.ply --cycles 0 --components 1
+set_aside=$(grep -c '^-1$' elephant_outliers.nodes || true)
+[ "$set_aside" -gt 0 ] || fail "no point of elephant_outliers.xyz was set aside"
+! head -n 2775 elephant_outliers.nodes | grep -q '^-1$' || fail "a point of the elephant itself was set aside"
+grep -q "; $set_aside outliers set aside (no node)" elephant_outliers.log \
+  || { cat elephant_outliers.log; fail "the report does not count the $set_aside outliers"; }
+for option in --paper --keep-outliers; do
+  "$PCSKELETON" elephant_outliers.xyz -o elephant_kept.ply --correspondence elephant_kept.nodes $option --quiet
+  ! grep -q '^-1$' elephant_kept.nodes || fail "$option left points without a node"
+done
+
+# Reproducible: byte-identical files on 1 and 2 threads (OpenMP and BLAS), run after run.
+for run in 1 2; do
+  for threads in 1 2; do
+    OMP_NUM_THREADS=$threads OPENBLAS_NUM_THREADS=$threads "$PCSKELETON" elephant_outliers.xyz \
+      -o same_${threads}_$run.ply --correspondence same_${threads}_$run.nodes --quiet
+  done
+done
+for f in same_1_2.ply same_2_1.ply same_2_2.ply; do
+  cmp -s same_1_1.ply "$f" || fail "$f differs from same_1_1.ply: the result depends on the threads or the run"
+  cmp -s same_1_1.nodes "${f%.ply}.nodes" || fail "${f%.ply}.nodes differs from same_1_1.nodes"
+done
+
 # --no-extend-tips gives the paper's shorter skeleton: fewer nodes than with extension.
 "$PCSKELETON" $M/elephant.off -o elephant_paper.ply --no-extend-tips --quiet
 paper=$($GRAPH show elephant_paper.ply | sed 's/.*nodes.: \([0-9]*\).*/\1/')
@@ -65,7 +107,8 @@ fine=$($GRAPH show knot.ply | sed 's/.*nodes.: \([0-9]*\).*/\1/')
 # --help documents every option with its default.
 "$PCSKELETON" --help >help.txt
 for option in --contracted --correspondence --k --wl --wh --sl --max-wl --max-wh --row-limit --iterations \
-              --threshold --radius --no-extend-tips --refine --report --quiet; do
+              --threshold --radius --no-extend-tips --refine --no-refine --keep-outliers --outlier-isolation \
+              --outlier-local --outlier-cluster --paper --report --quiet; do
   grep -q -- "$option" help.txt || fail "--help does not document $option"
 done
 grep -q "\[0.02\]" help.txt || fail "--help does not give the radius default"

@@ -3,6 +3,7 @@
 #include "plugin_fixture.h"
 
 #include "support/sampled_shapes.h"
+#include "support/scan_simulation.h"
 #include <pcskeleton/io/skeleton_io.h>
 
 #include <QFile>
@@ -247,7 +248,7 @@ TEST_F(SkeletonFilterTest, TipExtensionAndRefinementAreParametersWithHelp) {
     ASSERT_TRUE(parameters.hasParameter("extendTips"));
     ASSERT_TRUE(parameters.hasParameter("refine"));
     EXPECT_TRUE(parameters.getBool("extendTips"));
-    EXPECT_FALSE(parameters.getBool("refine"));
+    EXPECT_TRUE(parameters.getBool("refine")) << "on by default since the robustness suite showed it helps";
     EXPECT_FALSE(parameters.getParameterByName("refine").fieldDescription().isEmpty());
 
     // Without extension, a capped tube's skeleton is shorter than with it.
@@ -263,4 +264,45 @@ TEST_F(SkeletonFilterTest, TipExtensionAndRefinementAreParametersWithHelp) {
     const float paper = length(false), extended = length(true);
     EXPECT_GT(extended, paper + 0.05f);
     EXPECT_NEAR(extended, 1.2f, 0.03f);
+}
+
+TEST_F(SkeletonFilterTest, OutliersGetNoNodeUnlessThePapersPipelineIsAsked) {
+    LogCapture capture(plugin);
+    const pcskeleton::PointList torus = pcskeleton::shapes::torus(4000, 1.0, 0.3);
+    const pcskeleton::PointList cloud = pcskeleton::shapes::withOutliers(torus, 0.03, 5);
+    MeshModel* input = addPointLayer(cloud, "scan");
+    QAction* a = action(kSkeletonFilter);
+    RichParameterList p = defaults(a);
+    ASSERT_TRUE(p.getBool("detectOutliers"));
+    ASSERT_FALSE(p.getBool("paperPipeline"));
+    ASSERT_TRUE(apply(a, p)) << plugin->errorMsg().toStdString();
+    EXPECT_EQ(topologyOfLayer(*document.mm()).cycles, 1);
+    ASSERT_EQ(document.meshList.size(), 3);
+    MeshModel* segments = document.meshList[1];
+    ASSERT_EQ(segments->label(), "scan segments");
+    auto node = vcg::tri::Allocator<CMeshO>::FindPerVertexAttribute<int>(segments->cm, "pcs_node");
+    ASSERT_TRUE(vcg::tri::Allocator<CMeshO>::IsValidHandle(segments->cm, node));
+    int grey = 0, torusWithoutNode = 0;
+    for (std::size_t i = 0; i < segments->cm.vert.size(); ++i) {
+        if (node[i] < 0) {
+            ++grey;
+            EXPECT_EQ(segments->cm.vert[i].cC(), vcg::Color4b(vcg::Color4b::Gray));
+            torusWithoutNode += i < torus.size();
+        }
+    }
+    EXPECT_GT(grey, 40) << "most of the 120 outliers are far from the torus";
+    EXPECT_EQ(torusWithoutNode, 0);
+    const QString log = capture.text(GLLogStream::FILTER);
+    EXPECT_TRUE(log.contains(QString("%1 outliers set aside").arg(grey))) << log.toStdString();
+
+    // The paper's pipeline keeps every point: every point has a node.
+    document.setCurrentMesh(input->id());
+    p.setValue("paperPipeline", BoolValue(true));
+    ASSERT_TRUE(apply(a, p)) << plugin->errorMsg().toStdString();
+    ASSERT_EQ(document.meshList.size(), 5);
+    MeshModel* paperSegments = document.meshList[3];
+    auto paperNode = vcg::tri::Allocator<CMeshO>::FindPerVertexAttribute<int>(paperSegments->cm, "pcs_node");
+    for (std::size_t i = 0; i < paperSegments->cm.vert.size(); ++i) ASSERT_GE(paperNode[i], 0) << "point " << i;
+    EXPECT_TRUE(capture.text(GLLogStream::FILTER).contains("0 outliers set aside"));
+    EXPECT_TRUE(capture.text(GLLogStream::FILTER).contains("Tip extension: off"));
 }

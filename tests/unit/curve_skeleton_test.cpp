@@ -151,7 +151,7 @@ TEST(CurveSkeleton, TwoStagesEqualOneCall) {
     const PointList cloud = shapes::torus(3000, 1.0, 0.3);
     const SkeletonResult oneCall = computeCurveSkeleton(cloud);
     const SkeletonGraph fromContracted =
-        skeletonFromContractedPoints(cloud, oneCall.contraction.contracted, 0, ThinningParameters()).skeleton;
+        skeletonFromContractedPoints(cloud, oneCall.contraction.contracted, ContractionParameters{}, ThinningParameters()).skeleton;
     EXPECT_EQ(fromContracted.edges, oneCall.skeleton.edges);
     EXPECT_EQ(fromContracted.pointNode, oneCall.skeleton.pointNode);
 }
@@ -178,8 +178,8 @@ TEST(CurveSkeleton, SamplingRadiusMustBeAFraction) {
 
 TEST(CurveSkeleton, ContractedPointsMustMatchTheInput) {
     const PointList cloud = shapes::sphere(500, 1.0);
-    EXPECT_THROW(skeletonFromContractedPoints(cloud, PointList(10, Point::Zero()), 0, {}), InvalidInput);
+    EXPECT_THROW(skeletonFromContractedPoints(cloud, PointList(10, Point::Zero()), {}, {}), InvalidInput);
     PointList withNaN = cloud;
     withNaN[3].x() = std::nan("");
-    EXPECT_THROW(skeletonFromContractedPoints(cloud, withNaN, 0, {}), InvalidInput);
+    EXPECT_THROW(skeletonFromContractedPoints(cloud, withNaN, {}, {}), InvalidInput);
 }

@@ -17,7 +17,7 @@ namespace {
 PointList inputPoints(const NormalizedCloud& cloud) {
     PointList points;
     points.reserve(cloud.inputSize());
-    for (int unique : cloud.uniqueIndex) points.push_back(cloud.toInputFrame(cloud.points[unique]));
+    for (std::size_t i = 0; i < cloud.inputSize(); ++i) points.push_back(cloud.inputPosition(i));
     return points;
 }
 
@@ -84,7 +84,8 @@ SkeletonResult computeCurveSkeleton(const PointList& input, const SkeletonParame
     return skeletonFromContraction(contraction, parameters.thinning, progressRange(progress, 90, 100));
 }
 
-SkeletonResult skeletonFromContractedPoints(const PointList& input, const PointList& contracted, int k,
+SkeletonResult skeletonFromContractedPoints(const PointList& input, const PointList& contracted,
+                                            const ContractionParameters& contraction,
                                             const ThinningParameters& parameters, const ProgressCallback& progress) {
     if (contracted.size() != input.size()) {
         std::ostringstream message;
@@ -92,8 +93,10 @@ SkeletonResult skeletonFromContractedPoints(const PointList& input, const PointL
                 << ".";
         throw InvalidInput(message.str(), {Remedy::take(Step::ContractAgain)});
     }
+    checkOutlierParameters(contraction.outliers);
+    const int k = contraction.neighbourCount;
     const int neighbours = k > 0 ? k : defaultNeighbourCount(input.size());
-    const NormalizedCloud cloud = normalizeCloud(input, std::size_t(neighbours) + 1);
+    const NormalizedCloud cloud = normalizeCloud(input, std::size_t(neighbours) + 1, contraction.outliers);
     SkeletonResult result;
     Stopwatch stage;
     const OneRings rings = OneRings::compute(cloud.points, neighbours, progressRange(progress, 0, 50));
@@ -101,7 +104,9 @@ SkeletonResult skeletonFromContractedPoints(const PointList& input, const PointL
 
     rejectNonFinite(contracted, "contracted points", Remedy::take(Step::ContractAgain));
     PointList contractedUnique(cloud.points.size());
-    for (std::size_t i = 0; i < input.size(); ++i) contractedUnique[cloud.uniqueIndex[i]] = cloud.toNormalizedFrame(contracted[i]);
+    for (std::size_t i = 0; i < input.size(); ++i) {
+        if (!cloud.isOutlier(i)) contractedUnique[cloud.uniqueIndex[i]] = cloud.toNormalizedFrame(contracted[i]);
+    }
     result.contraction.contracted = contracted;
     thinAndEmbed(cloud, rings, contractedUnique, parameters, result, progressRange(progress, 50, 100));
     return result;

@@ -24,13 +24,23 @@ struct ThinningParameters {
     // the gap to the shapes' ends with and without.
     bool extendTips = true;
     // Remove spurs and loops without a hole, merge close junctions (skeleton_refinement.h).
-    // Off by default: it changes the paper's result.
-    bool refine = false;
+    // On by default: on the robustness suite (with outlier detection) it turns 5 wrong
+    // topologies of 110 cases right (spurs from noise and misaligned scans) and none wrong.
+    bool refine = true;
 };
 
 struct SkeletonParameters {
     ContractionParameters contraction;
     ThinningParameters thinning;
+
+    // The paper's pipeline exactly: no outlier detection, refinement or tip extension.
+    static SkeletonParameters paper() {
+        SkeletonParameters p;
+        p.contraction.outliers.detect = false;
+        p.thinning.refine = false;
+        p.thinning.extendTips = false;
+        return p;
+    }
 };
 
 struct StageSeconds {
@@ -57,8 +67,10 @@ SkeletonResult skeletonFromContraction(const LaplacianContraction& contraction, 
                                        const ProgressCallback& progress = {});
 
 // The same for `contracted` (one point per input point, same order) made earlier from
-// `input`. The 1-rings are rebuilt on `input` with k neighbours (0 = the paper's rule).
-SkeletonResult skeletonFromContractedPoints(const PointList& input, const PointList& contracted, int k,
+// `input` with `contraction`'s parameters: the 1-rings and the outliers are found again with
+// its k (0 = the paper's rule) and outlier parameters.
+SkeletonResult skeletonFromContractedPoints(const PointList& input, const PointList& contracted,
+                                            const ContractionParameters& contraction,
                                             const ThinningParameters& parameters,
                                             const ProgressCallback& progress = {});
 

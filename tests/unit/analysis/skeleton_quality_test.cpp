@@ -25,9 +25,28 @@ TEST(QualityReport, ATorusGivesOneCycleAndNoWarning) {
     EXPECT_NE(text.find("No warnings."), std::string::npos) << text;
 }
 
-TEST(QualityReport, OutliersAreReported) {
-    const PointList cloud = shapes::withOutliers(shapes::torus(6000, 1.0, 0.3), 0.05, 3);
+TEST(QualityReport, OutliersAreSetAsideAndReported) {
+    const PointList torus = shapes::torus(6000, 1.0, 0.3);
+    const PointList cloud = shapes::withOutliers(torus, 0.05, 3);
     const SkeletonResult result = computeCurveSkeleton(cloud);
+    EXPECT_EQ(result.quality.topology.cycles, 1) << describe(result.quality);
+    EXPECT_EQ(result.quality.topology.components, 1) << describe(result.quality);
+    EXPECT_GT(result.quality.outliers, 100u) << "most of the 300 outliers are far from the torus";
+    std::size_t onTorus = 0, marked = 0;
+    for (std::size_t i = 0; i < cloud.size(); ++i) {
+        const int node = result.skeleton.pointNode[i];
+        if (i < torus.size()) onTorus += node < 0;
+        else marked += node < 0;
+    }
+    EXPECT_EQ(onTorus, 0u) << "a point of the torus was taken for an outlier";
+    EXPECT_EQ(marked, result.quality.outliers) << "outliers have no node";
+    EXPECT_NE(describe(result.quality).find(std::to_string(result.quality.outliers) + " outliers set aside"),
+              std::string::npos) << describe(result.quality);
+}
+
+TEST(QualityReport, OutliersAreReportedByThePapersPipeline) {
+    const PointList cloud = shapes::withOutliers(shapes::torus(6000, 1.0, 0.3), 0.05, 3);
+    const SkeletonResult result = computeCurveSkeleton(cloud, SkeletonParameters::paper());
     const std::string text = describe(result.quality);
     EXPECT_GT(result.quality.uncontractedPoints + result.quality.pointsOfIsolatedNodes, 0u) << text;
     EXPECT_FALSE(result.quality.warnings().empty()) << text;

@@ -64,7 +64,7 @@ TEST(Advice, TheLibrarysOwnWordsNameNoFrontEnd) {
         for (const char* frontEnd : {"Filters >", "Edit Skeleton", "MeshLab", "--"})
             EXPECT_EQ(text.find(frontEnd), std::string::npos) << text;
     }
-    for (int p = 0; p <= int(Parameter::OutsideDistance); ++p) EXPECT_FALSE(libraryTerms().parameter(Parameter(p)).empty());
+    for (int p = 0; p <= int(Parameter::OutlierClusterShare); ++p) EXPECT_FALSE(libraryTerms().parameter(Parameter(p)).empty());
 }
 
 }  // namespace

@@ -14,6 +14,9 @@ namespace {
 
 constexpr double kUncontractedRadiusShare = 1.0;
 constexpr double kUncontractedShareWarning = 0.01;
+// Uniform outliers of 5% of the points are found at about two thirds (bench_robustness
+// --outliers): more than this share set aside suggests real data taken for outliers.
+constexpr double kOutlierShareWarning = 0.05;
 constexpr double kOneSidedness = 0.8;
 constexpr int kMinimumPointsForSideCheck = 4;
 
@@ -27,7 +30,7 @@ std::string percent(double share) {
 // farther from the nearest bone than the radius there. (Well contracted clouds stay
 // under 0.25 radii on tubes; thick bodies leave up to 1% of their points past 0.9.)
 std::size_t countUncontracted(const SkeletonGraph& skeleton, const NormalizedCloud& cloud, const PointList& contracted) {
-    if (skeleton.nodeCount() == 0) return cloud.inputSize();
+    if (skeleton.nodeCount() == 0) return cloud.inputSize() - cloud.outliers.size();
     const SkeletonDistance distance(skeleton);
     std::vector<char> stayed(contracted.size(), 0);
 #pragma omp parallel for schedule(static)
@@ -36,7 +39,7 @@ std::size_t countUncontracted(const SkeletonGraph& skeleton, const NormalizedClo
         stayed[i] = near.distance > kUncontractedRadiusShare * near.radius;
     }
     std::size_t uncontracted = 0;
-    for (int unique : cloud.uniqueIndex) uncontracted += stayed[unique];
+    for (int unique : cloud.uniqueIndex) uncontracted += unique >= 0 && stayed[unique];
     return uncontracted;
 }
 
@@ -50,6 +53,7 @@ void checkInputParts(const SkeletonGraph& skeleton, const NormalizedCloud& cloud
     std::vector<char> isPart(cloud.points.size(), 0), hasBone(cloud.points.size(), 0);
     std::vector<std::size_t> partPoints(cloud.points.size(), 0);
     for (std::size_t i = 0; i < cloud.inputSize(); ++i) {
+        if (cloud.isOutlier(i)) continue;
         const int part = parts.find(cloud.uniqueIndex[i]);
         const int node = skeleton.pointNode[i];
         isPart[part] = 1;
@@ -91,6 +95,7 @@ SkeletonQuality assessSkeleton(const SkeletonGraph& skeleton, const NormalizedCl
     quality.topology = analyseTopology(skeleton);
     quality.nodeSpacing = nodeSpacing;
     quality.points = cloud.inputSize();
+    quality.outliers = cloud.outliers.size();
     quality.uncontractedPoints = countUncontracted(skeleton, cloud, contracted);
     checkInputParts(skeleton, cloud, rings, quality);
     quality.nodesOutside = nodesWithPointsOnOneSide(skeleton, cloud);
@@ -115,6 +120,14 @@ std::vector<QualityWarning> SkeletonQuality::warnings() const {
     } else if (stopReason == StopReason::NumericalFailure) {
         add(Kind::NumericalFailure, "Contraction failed numerically and kept its last good positions",
             {Remedy::lower(Parameter::InitialContractionWeight), Remedy::lower(Parameter::LaplacianRowLimit)});
+    }
+    if (points > 0 && outliers > kOutlierShareWarning * points) {
+        add(Kind::ManyOutliers,
+            counted(outliers, "point", "points") + " (" + percent(double(outliers) / points) +
+                ") were set aside as outliers: if some are a sparsely sampled part of the shape, it is missing from "
+                "the skeleton.",
+            {Remedy::raise(Parameter::OutlierIsolation), Remedy::raise(Parameter::OutlierLocalFactor),
+             Remedy::turnOff(Parameter::OutlierDetection)});
     }
     if (points > 0 && uncontractedPoints > kUncontractedShareWarning * points) {
         add(Kind::UncontractedPoints,
@@ -172,7 +185,8 @@ std::string describeFindings(const SkeletonQuality& q) {
           << describe(q.stopReason) << "; mean 1-ring size " << percent(q.extentRatio) << " of the initial.\n";
     }
     s << "Input: " << counted(q.points, "point", "points") << " in " << counted(std::size_t(q.inputParts), "part", "parts")
-      << "; " << q.uncontractedPoints << " did not contract.\n";
+      << "; " << counted(q.outliers, "outlier", "outliers") << " set aside (no node); " << q.uncontractedPoints
+      << " did not contract.\n";
     s << "Tip extension: ";
     if (!q.tipsExtended) s << "off.\n";
     else if (q.tipExtension.extendedTips == 0) s << "no limb to extend.\n";

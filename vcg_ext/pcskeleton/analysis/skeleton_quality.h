@@ -28,6 +28,7 @@ struct QualityWarning {
     enum class Kind {
         IterationLimit,
         NumericalFailure,
+        ManyOutliers,
         UncontractedPoints,
         PartsWithoutBone,
         IsolatedNodes,
@@ -49,6 +50,7 @@ struct SkeletonQuality {
     double extentRatio = 1.0;  // mean 1-ring size at the end, relative to the start
 
     std::size_t points = 0;
+    std::size_t outliers = 0;       // set aside before the 1-rings: no node
     std::size_t uncontractedPoints = 0;
     int inputParts = 0;             // connected parts of the input through the 1-rings
     int partsWithoutBone = 0;       // of which gave no bone

@@ -34,6 +34,7 @@ void checkParameters(const ContractionParameters& p) {
     require(p.laplacianRowLimit > 0, Parameter::LaplacianRowLimit, "must be positive.");
     require(p.maxIterations >= 1, Parameter::MaxIterations, "must be at least 1.");
     require(p.terminationThreshold >= 0, Parameter::TerminationThreshold, "must be >= 0.");
+    checkOutlierParameters(p.outliers);
 }
 
 int chooseNeighbourCount(const ContractionParameters& p, std::size_t inputSize) {
@@ -57,7 +58,7 @@ LaplacianContraction::LaplacianContraction(const PointList& input, const Contrac
     : parameters_(parameters), solver_(parameters.solver) {
     checkParameters(parameters_);
     const int k = chooseNeighbourCount(parameters_, input.size());
-    cloud_ = normalizeCloud(input, static_cast<std::size_t>(k) + 1);
+    cloud_ = normalizeCloud(input, static_cast<std::size_t>(k) + 1, parameters_.outliers);
 
     const Stopwatch stopwatch;
     rings_ = OneRings::compute(cloud_.points, k, progress);
@@ -148,8 +149,12 @@ IterationReport LaplacianContraction::iterate() {
 }
 
 PointList LaplacianContraction::contractedPoints() const {
+    // Outliers are not contracted: they stay where they are.
     PointList result(cloud_.inputSize());
-    for (std::size_t i = 0; i < result.size(); ++i) result[i] = cloud_.toInputFrame(positions_[cloud_.uniqueIndex[i]]);
+    for (std::size_t i = 0; i < result.size(); ++i) {
+        const int unique = cloud_.uniqueIndex[i];
+        result[i] = unique >= 0 ? cloud_.toInputFrame(positions_[unique]) : cloud_.inputPosition(i);
+    }
     return result;
 }
 

@@ -38,6 +38,7 @@ struct ContractionParameters {
     double laplacianRowLimit = 10000.0;     // cap on a Laplacian row's absolute weight sum
     int maxIterations = 20;
     double terminationThreshold = 0.01;     // stop when the extent ratio falls by less than this
+    OutlierParameters outliers;             // points set aside before the 1-rings (not the paper's)
     LinearSolver solver = LinearSolver::Cholmod;
 };
 

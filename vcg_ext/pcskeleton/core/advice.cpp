@@ -30,6 +30,10 @@ std::string libraryParameterName(Parameter p) {
         case Parameter::SkeletonWeight: return "the skeleton weight";
         case Parameter::OutsideWeight: return "the outside weight";
         case Parameter::OutsideDistance: return "K (outside distance, in radii)";
+        case Parameter::OutlierDetection: return "outlier detection";
+        case Parameter::OutlierIsolation: return "the outlier isolation factor";
+        case Parameter::OutlierLocalFactor: return "the outlier local factor";
+        case Parameter::OutlierClusterShare: return "the outlier cluster share";
     }
     return "a parameter";
 }
@@ -52,6 +56,7 @@ std::string verb(Remedy::Kind kind) {
         case Remedy::Kind::Raise: return "raise ";
         case Remedy::Kind::Lower: return "lower ";
         case Remedy::Kind::TurnOn: return "turn on ";
+        case Remedy::Kind::TurnOff: return "turn off ";
         case Remedy::Kind::Take: return "";
     }
     return "";

@@ -31,6 +31,10 @@ enum class Parameter {
     SkeletonWeight,
     OutsideWeight,
     OutsideDistance,
+    OutlierDetection,
+    OutlierIsolation,
+    OutlierLocalFactor,
+    OutlierClusterShare,
 };
 
 // Steps the user takes outside the computation that found the problem.
@@ -45,14 +49,15 @@ enum class Step {
 };
 
 struct Remedy {
-    enum class Kind { Raise, Lower, TurnOn, Take };
+    enum class Kind { Raise, Lower, TurnOn, TurnOff, Take };
     Kind kind;
-    Parameter parameter;  // Raise, Lower, TurnOn
+    Parameter parameter;  // Raise, Lower, TurnOn, TurnOff
     Step step;            // Take
 
     static Remedy raise(Parameter p) { return {Kind::Raise, p, Step{}}; }
     static Remedy lower(Parameter p) { return {Kind::Lower, p, Step{}}; }
     static Remedy turnOn(Parameter p) { return {Kind::TurnOn, p, Step{}}; }
+    static Remedy turnOff(Parameter p) { return {Kind::TurnOff, p, Step{}}; }
     static Remedy take(Step s) { return {Kind::Take, Parameter{}, s}; }
     bool operator==(const Remedy& o) const {
         return kind == o.kind && (kind == Kind::Take ? step == o.step : parameter == o.parameter);

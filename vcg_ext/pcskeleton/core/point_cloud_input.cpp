@@ -61,6 +61,29 @@ void mergeExactDuplicates(const PointList& input, NormalizedCloud& cloud) {
     }
 }
 
+// Removes the unique points flagged in `outlier` from `cloud.points`, keeping the others in
+// order; every input point copy of an outlier is recorded, at its input position.
+void setOutliersAside(const PointList& input, const std::vector<char>& outlier, NormalizedCloud& cloud) {
+    if (std::find(outlier.begin(), outlier.end(), 1) == outlier.end()) return;
+    std::vector<int> kept(cloud.points.size(), -1);
+    PointList points;
+    for (std::size_t u = 0; u < cloud.points.size(); ++u) {
+        if (outlier[u]) continue;
+        kept[u] = int(points.size());
+        points.push_back(cloud.points[u]);
+    }
+    cloud.points = std::move(points);
+    for (std::size_t i = 0; i < input.size(); ++i) {
+        int& index = cloud.uniqueIndex[i];
+        if (kept[index] >= 0) {
+            index = kept[index];
+        } else {
+            index = -1 - int(cloud.outliers.size());
+            cloud.outliers.push_back(input[i]);
+        }
+    }
+}
+
 void rejectCollinear(const PointList& points) {
     Point mean = Point::Zero();
     for (const Point& p : points) mean += p;
@@ -84,19 +107,24 @@ Eigen::AlignedBox3d boundingBox(const PointList& points) {
     return box;
 }
 
-NormalizedCloud normalizeCloud(const PointList& input, std::size_t minimumUniquePoints) {
+NormalizedCloud normalizeCloud(const PointList& input, std::size_t minimumUniquePoints,
+                               const OutlierParameters& outliers) {
     if (input.empty()) throw InvalidInput("The point layer is empty.");
     rejectNonFinite(input, "points", Remedy::take(Step::RemoveNonFinitePoints));
 
     NormalizedCloud cloud;
     mergeExactDuplicates(input, cloud);
+    const std::size_t distinct = cloud.points.size();
+    setOutliersAside(input, findOutliers(cloud.points, outliers), cloud);
     if (cloud.points.size() < minimumUniquePoints) {
         std::ostringstream msg;
         msg << "Too few points: " << cloud.points.size() << " distinct points";
-        if (cloud.points.size() != input.size()) msg << " (" << input.size() << " with duplicates)";
-        msg << ", at least " << minimumUniquePoints
-            << " are needed (k nearest neighbours + 1).";
-        throw InvalidInput(msg.str(), {Remedy::lower(Parameter::NeighbourCount)});
+        if (distinct != input.size()) msg << " (" << input.size() << " with duplicates)";
+        if (!cloud.outliers.empty()) msg << " besides " << cloud.outliers.size() << " outliers";
+        msg << ", at least " << minimumUniquePoints << " are needed (k nearest neighbours + 1).";
+        std::vector<Remedy> remedies{Remedy::lower(Parameter::NeighbourCount)};
+        if (!cloud.outliers.empty()) remedies.push_back(Remedy::raise(Parameter::OutlierIsolation));
+        throw InvalidInput(msg.str(), remedies);
     }
 
     const Eigen::AlignedBox3d box = boundingBox(cloud.points);

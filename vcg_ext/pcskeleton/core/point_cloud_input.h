@@ -2,6 +2,8 @@
 #pragma once
 
 #include "pcskeleton/core/errors.h"
+#include "pcskeleton/core/outlier_detection.h"
+#include "pcskeleton/core/point.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -11,16 +13,16 @@
 
 namespace pcskeleton {
 
-using Point = Eigen::Vector3d;
-using PointList = std::vector<Point>;
 
 // The cloud as the algorithm sees it: exact duplicates merged, centred on its bounding
 // box and scaled so that the longest side of the box is 1.6 (the frame of the authors'
 // reference code, in which the paper's default weights were tuned). Results are mapped
 // back with toInputFrame(), so every result is independent of the cloud's units.
 struct NormalizedCloud {
-    PointList points;              // unique points, normalised frame
-    std::vector<int> uniqueIndex;  // for each input point, its index in `points`
+    PointList points;              // unique points that are not outliers, normalised frame
+    // For each input point, its index in `points`; for an outlier, -1 - its index in `outliers`.
+    std::vector<int> uniqueIndex;
+    PointList outliers;            // the input positions of the points set aside as outliers
     Point center = Point::Zero();
     double scale = 1.0;            // normalised = (input - center) * scale
     double diagonal = 0.0;         // bounding-box diagonal, normalised frame
@@ -28,6 +30,11 @@ struct NormalizedCloud {
     Point toInputFrame(const Point& p) const { return p / scale + center; }
     Point toNormalizedFrame(const Point& p) const { return (p - center) * scale; }
     std::size_t inputSize() const { return uniqueIndex.size(); }
+    bool isOutlier(std::size_t i) const { return uniqueIndex[i] < 0; }
+    // Input point i where it is: from `points` (mapped back), or as it was for an outlier.
+    Point inputPosition(std::size_t i) const {
+        return uniqueIndex[i] >= 0 ? toInputFrame(points[uniqueIndex[i]]) : outliers[std::size_t(-1 - uniqueIndex[i])];
+    }
 };
 
 constexpr double kNormalizedLongestSide = 1.6;
@@ -35,10 +42,13 @@ constexpr double kNormalizedLongestSide = 1.6;
 // The axis-aligned box holding the points (empty for no points).
 Eigen::AlignedBox3d boundingBox(const PointList& points);
 
-// Validates and normalises. Throws InvalidInput, naming the problem and what to do,
-// for: no points; NaN or infinite coordinates; fewer than `minimumUniquePoints`
-// distinct points; all points (numerically) on one line.
-NormalizedCloud normalizeCloud(const PointList& input, std::size_t minimumUniquePoints);
+// Validates, sets outliers aside (see outlier_detection.h) and normalises the rest (so the
+// frame, and every length relative to it, follows the surface, not the outliers). Throws
+// InvalidInput, naming the problem and what to do, for: no points; NaN or infinite
+// coordinates; fewer than `minimumUniquePoints` distinct points that are not outliers; all
+// those points (numerically) on one line.
+NormalizedCloud normalizeCloud(const PointList& input, std::size_t minimumUniquePoints,
+                               const OutlierParameters& outliers);
 
 // Throws InvalidInput when a point has a NaN or infinite coordinate, naming how many and
 // the first: "<count> of <n> <what> have NaN or infinite coordinates (first: point i).",

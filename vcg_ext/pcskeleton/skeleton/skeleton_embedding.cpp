@@ -26,7 +26,7 @@ SkeletonGraph embedSkeleton(const ThinnedGraph& graph, const NormalizedCloud& cl
         skeleton.radii.push_back(radius[n] / std::max(members[n], 1) / cloud.scale);
     }
     skeleton.pointNode.reserve(cloud.inputSize());
-    for (int unique : cloud.uniqueIndex) skeleton.pointNode.push_back(graph.owner[unique]);
+    for (int unique : cloud.uniqueIndex) skeleton.pointNode.push_back(unique >= 0 ? graph.owner[unique] : -1);
     fillMissingRadii(skeleton);  // a node owning one point (an outlier) has radius 0
     return skeleton;
 }
