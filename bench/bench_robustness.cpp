@@ -435,6 +435,7 @@ int main(int argc, char** argv) {
     if (!numbers.empty()) n = std::size_t(numbers[0]);
     SkeletonParameters pipeline = paper ? SkeletonParameters::paper() : SkeletonParameters{};
     if (std::find(args.begin(), args.end(), "--no-refine") != args.end()) pipeline.thinning.refine = false;
+    if (std::find(args.begin(), args.end(), "--no-recentre") != args.end()) pipeline.thinning.recentre = false;
     std::vector<Subject> subjects = knownShapes();
     const std::vector<std::string> models{"elephant", "knot1", "eight", "hand"};
     const std::filesystem::path folder = extractModels(models);

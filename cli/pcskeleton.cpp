@@ -116,6 +116,9 @@ void printHelp() {
         "                        junctions closer than the node spacing; by default they are\n"
         "                        removed or merged (noise and misaligned scans leave them).\n"
         "                        --refine turns it on again after --paper.\n"
+        "  --no-recentre         leave every node at the centre of its points; by default a\n"
+        "                        node whose points cover one side of its bone only (one-view\n"
+        "                        scans, holes) moves to the centre of the circle through them\n"
         "  --keep-outliers       contract every point; by default points that do not belong\n"
         "                        to the sampled surface (isolated points, small sparse\n"
         "                        clusters) are set aside and get no node (-1 in\n"
@@ -129,7 +132,7 @@ void printHelp() {
         "  --outlier-cluster S   groups of points holding less than this share of the cloud\n"
         "                        are outlier clusters [%g]; 0 keeps every group\n"
         "  --paper               the paper's pipeline exactly: the same as --keep-outliers\n"
-        "                        --no-refine --no-extend-tips\n"
+        "                        --no-recentre --no-refine --no-extend-tips\n"
         "  --report FILE         also write the quality report to FILE\n"
         "  --quiet               no progress and no summary on stderr\n"
         "  -h, --help            this text\n"
@@ -187,6 +190,8 @@ bool parseArguments(int argc, char** argv, Options& options) {
             options.parameters.thinning.extendTips = false;
         } else if (arg == "--refine" || arg == "--no-refine") {
             options.parameters.thinning.refine = arg == "--refine";
+        } else if (arg == "--no-recentre") {
+            options.parameters.thinning.recentre = false;
         } else if (arg == "--keep-outliers") {
             c.outliers.detect = false;
         } else if (arg == "--paper") {
@@ -194,6 +199,7 @@ bool parseArguments(int argc, char** argv, Options& options) {
             c.outliers.detect = paper.contraction.outliers.detect;
             options.parameters.thinning.refine = paper.thinning.refine;
             options.parameters.thinning.extendTips = paper.thinning.extendTips;
+            options.parameters.thinning.recentre = paper.thinning.recentre;
         } else if (auto option = withValue.find(arg); option != withValue.end()) {
             if (i + 1 >= argc) throw UsageError(arg + " needs a value");
             option->second(argv[++i]);

@@ -100,6 +100,10 @@ void addThinningParameters(RichParameterList& list) {
         "Contraction pulls the ends of limbs inwards, so the skeleton stops short of them. This extends every "
         "limb (not the short spurs) along its direction to the farthest of its tip's points, with a new end node. "
         "Turn it off to get the paper's skeleton exactly."));
+    list.addParam(RichBool("recentre", d.recentre, "Re-centre nodes of one-sided parts",
+        "Where a node's points cover one side of its bone only (a scan from one side, a hole), their centre lies "
+        "on the visible wall: the node moves to the centre of the circle through them, with that circle's "
+        "radius. Nodes whose points surround them stay at their centre, as in the paper."));
     list.addParam(RichBool("refine", d.refine, label(Parameter::Refinement),
         "Cleans what noise leaves: limbs shorter than the body is thick where they join are absorbed into the "
         "junction, loops smaller than the tube around them collapse to a node, junctions closer than the node "
@@ -123,6 +127,7 @@ pcskeleton::ThinningParameters readThinningParameters(const RichParameterList& l
     pcskeleton::ThinningParameters p;
     p.sampleRadius = list.getFloat("sampleRadius");
     p.extendTips = list.getBool("extendTips");
+    p.recentre = list.getBool("recentre");
     p.refine = list.getBool("refine");
     return p;
 }
@@ -341,8 +346,8 @@ void FilterPCSkeletonPlugin::initParameterSet(QAction* action, MeshDocument& md,
                 "Also adds the contracted points as a layer, e.g. to thin them again later with other settings "
                 "(Skeleton from Contracted Points)."));
             parameters.addParam(RichBool("paperPipeline", false, "The paper's pipeline only",
-                "Exactly the paper's steps: no outlier detection, refinement or tip extension, whatever is ticked "
-                "above. For comparison with the paper and other implementations of it."));
+                "Exactly the paper's steps: no outlier detection, re-centring, refinement or tip extension, "
+                "whatever is ticked above. For comparison with the paper and other implementations of it."));
             break;
         case FP_SKELETON_FROM_CONTRACTED:
             parameters.addParam(RichMesh("sourceLayer", likelySourceOf(md, md.mm()), &md, "Original points",

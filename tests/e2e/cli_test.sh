@@ -107,7 +107,7 @@ fine=$($GRAPH show knot.ply | sed 's/.*nodes.: \([0-9]*\).*/\1/')
 # --help documents every option with its default.
 "$PCSKELETON" --help >help.txt
 for option in --contracted --correspondence --k --wl --wh --sl --max-wl --max-wh --row-limit --iterations \
-              --threshold --radius --no-extend-tips --refine --no-refine --keep-outliers --outlier-isolation \
+              --threshold --radius --no-extend-tips --refine --no-refine --no-recentre --keep-outliers --outlier-isolation \
               --outlier-local --outlier-cluster --paper --report --quiet; do
   grep -q -- "$option" help.txt || fail "--help does not document $option"
 done

@@ -1,10 +1,12 @@
 #include "pcskeleton/curve_skeleton.h"
 
+#include "pcskeleton/analysis/node_recentering.h"
 #include "pcskeleton/analysis/skeleton_refinement.h"
 #include "pcskeleton/internal/stopwatch.h"
 #include "pcskeleton/skeleton/skeleton_embedding.h"
 #include "pcskeleton/skeleton/skeleton_thinning.h"
 
+#include <algorithm>
 #include <sstream>
 
 namespace pcskeleton {
@@ -38,11 +40,20 @@ void thinAndEmbed(const NormalizedCloud& cloud, const OneRings& rings, const Poi
 
     stage.restart();
     const double nodeSpacing = radius / cloud.scale;
+    const PointList points = inputPoints(cloud);
     RefinementReport refinement;
     if (parameters.refine) refinement = refineSkeleton(result.skeleton, nodeSpacing);
+    // After refinement, whose merges renumber nodes: the moved nodes keep their numbers.
+    RecenteringReport recentering;
+    if (parameters.recentre) recentering = recentreOneSidedNodes(result.skeleton, points);
     TipExtensionReport extension;
-    if (parameters.extendTips) extension = extendTips(result.skeleton, inputPoints(cloud), nodeSpacing);
+    if (parameters.extendTips) extension = extendTips(result.skeleton, points, nodeSpacing);
     result.quality = assessSkeleton(result.skeleton, cloud, rings, contracted, nodeSpacing);
+    // A re-centred node is off its points' centre by design, not outside the shape.
+    std::vector<int>& outside = result.quality.nodesOutside;
+    for (int moved : recentering.nodes) outside.erase(std::remove(outside.begin(), outside.end(), moved), outside.end());
+    result.quality.recentred = parameters.recentre;
+    result.quality.recentering = recentering;
     result.quality.refined = parameters.refine;
     result.quality.refinement = refinement;
     result.quality.tipsExtended = parameters.extendTips;

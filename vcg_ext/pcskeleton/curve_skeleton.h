@@ -27,6 +27,9 @@ struct ThinningParameters {
     // On by default: on the robustness suite (with outlier detection) it turns 5 wrong
     // topologies of 110 cases right (spurs from noise and misaligned scans) and none wrong.
     bool refine = true;
+    // Move nodes whose points cover one side of their bone only (one-view scans, holes) to
+    // the centre of the circle through those points (node_recentering.h).
+    bool recentre = true;
 };
 
 struct SkeletonParameters {
@@ -39,6 +42,7 @@ struct SkeletonParameters {
         p.contraction.outliers.detect = false;
         p.thinning.refine = false;
         p.thinning.extendTips = false;
+        p.thinning.recentre = false;
         return p;
     }
 };

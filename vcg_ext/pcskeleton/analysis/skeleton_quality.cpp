@@ -193,6 +193,12 @@ std::string describeFindings(const SkeletonQuality& q) {
     else s << counted(std::size_t(q.tipExtension.extendedTips), "limb", "limbs") << " extended, by "
            << std::setprecision(3) << q.tipExtension.meanLength << " on average, at most "
            << q.tipExtension.longest << ".\n";
+    s << "Re-centring: ";
+    if (!q.recentred) s << "off.\n";
+    else s << counted(std::size_t(q.recentering.recentredNodes), "node", "nodes") << " of one-sided parts moved"
+           << (q.recentering.recentredNodes ? ", by " : "") << std::setprecision(3);
+    if (q.recentred && q.recentering.recentredNodes) s << q.recentering.meanShift << " on average";
+    if (q.recentred) s << ".\n";
     s << "Refinement: " << (q.refined ? describe(q.refinement) : std::string("off")) << ".";
     return s.str();
 }

@@ -15,6 +15,7 @@
 
 #include "pcskeleton/contraction/laplacian_contraction.h"
 #include "pcskeleton/skeleton/skeleton_graph.h"
+#include "pcskeleton/analysis/node_recentering.h"
 #include "pcskeleton/analysis/skeleton_refinement.h"
 #include "pcskeleton/analysis/tip_extension.h"
 #include "pcskeleton/core/advice.h"
@@ -60,6 +61,8 @@ struct SkeletonQuality {
     std::vector<std::vector<int>> spurs;           // node paths, tip first
     std::vector<std::vector<int>> spuriousCycles;  // node cycles
 
+    bool recentred = false;
+    RecenteringReport recentering;
     bool refined = false;
     RefinementReport refinement;
     bool tipsExtended = false;

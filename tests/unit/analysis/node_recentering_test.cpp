@@ -1,0 +1,86 @@
+// Re-centring: nodes of a half tube (one view) move onto its axis; nodes whose points
+// surround them stay at their centre.
+#include <pcskeleton/analysis/node_recentering.h>
+#include <pcskeleton/curve_skeleton.h>
+#include "support/sampled_shapes.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace pcskeleton {
+namespace {
+
+// Three nodes along x at the centroids of the points of a tube of radius 0.2 around the x
+// axis, covering `sweep` radians of each cross-section.
+SkeletonGraph nodesOfAnArc(double sweep, PointList& points) {
+    SkeletonGraph g;
+    for (int n = 0; n < 3; ++n) {
+        Point centroid = Point::Zero();
+        for (int k = 0; k < 40; ++k) {
+            const double angle = sweep * (k + 0.5) / 40, x = n + 0.01 * (k % 5);
+            points.emplace_back(x, 0.2 * std::cos(angle), 0.2 * std::sin(angle));
+            g.pointNode.push_back(n);
+            centroid += points.back();
+        }
+        g.nodes.push_back(centroid / 40);
+        g.radii.push_back(0.1);
+    }
+    g.edges = {{0, 1}, {1, 2}};
+    return g;
+}
+
+TEST(NodeRecentering, NodesOfAHalfTubeMoveOntoItsAxisWithItsRadius) {
+    PointList points;
+    SkeletonGraph g = nodesOfAnArc(M_PI, points);
+    ASSERT_GT(std::hypot(g.nodes[1].y(), g.nodes[1].z()), 0.1) << "the centroid lies on the visible wall";
+    const RecenteringReport report = recentreOneSidedNodes(g, points);
+    EXPECT_EQ(report.recentredNodes, 3);
+    for (std::size_t n = 0; n < 3; ++n) {
+        EXPECT_NEAR(std::hypot(g.nodes[n].y(), g.nodes[n].z()), 0.0, 1e-6) << "node " << n;
+        EXPECT_NEAR(g.radii[n], 0.2, 1e-6);
+    }
+}
+
+TEST(NodeRecentering, NodesSurroundedByTheirPointsStay) {
+    PointList points;
+    SkeletonGraph g = nodesOfAnArc(2 * M_PI, points);
+    const SkeletonGraph before = g;
+    EXPECT_EQ(recentreOneSidedNodes(g, points).recentredNodes, 0);
+    EXPECT_EQ(g.nodes, before.nodes);
+    EXPECT_EQ(g.radii, before.radii);
+}
+
+TEST(NodeRecentering, AOneViewScanOfATubeGivesItsAxis) {
+    // The half of an open tube facing +y, as one scan sees it.
+    PointList half;
+    for (const Point& p : shapes::cylinder(8000, 0.1, 1.0, false)) {
+        if (p.y() > 0) half.push_back(p);
+    }
+    const double diagonal = boundingBox(half).diagonal().norm();
+    // Along the tube (its ends, where the scan's two edges meet, are not a cross-section).
+    auto meanAxisDistance = [&](const SkeletonGraph& s) {
+        const std::vector<int> degree = nodeDegrees(s.nodeCount(), s.edges);
+        double sum = 0;
+        int along = 0;
+        for (std::size_t n = 0; n < s.nodeCount(); ++n) {
+            if (degree[n] != 2 || s.nodes[n].z() < 0.1 || s.nodes[n].z() > 0.9) continue;
+            sum += std::hypot(s.nodes[n].x(), s.nodes[n].y());
+            ++along;
+        }
+        EXPECT_GT(along, 8);
+        return sum / along / diagonal;
+    };
+    SkeletonParameters off;
+    off.thinning.recentre = false;
+    const SkeletonResult centroids = computeCurveSkeleton(half, off);
+    const SkeletonResult recentred = computeCurveSkeleton(half);
+    EXPECT_GT(meanAxisDistance(centroids.skeleton), 0.04) << "the paper's nodes sit on the visible wall";
+    EXPECT_LT(meanAxisDistance(recentred.skeleton), 0.02);
+    EXPECT_GT(recentred.quality.recentering.recentredNodes, 0);
+    EXPECT_EQ(recentred.quality.topology.components, 1);
+    EXPECT_TRUE(recentred.quality.nodesOutside.empty()) << "a re-centred node is not outside the shape";
+}
+
+}  // namespace
+}  // namespace pcskeleton
