@@ -37,5 +37,5 @@ picture not-converged "Contraction stopped early: raise --iterations" \
   "ring" "clean" "--iterations 1|--iterations 1" "default|"
 picture spacing-too-large "Node spacing too large merges loops: lower --radius" \
   "genus 2 (figure eight)" "clean" "--radius 0.3|--radius 0.3" "default (0.02)|"
-picture outliers "Outliers make false loops: remove them before contracting" \
-  "Y branch" "outliers 1%" "default|"
+picture outliers "Outliers make false loops; outlier detection (on by default) sets them aside" \
+  "Y branch" "outliers 1%" "--paper|--paper" "default|"
