@@ -2,13 +2,14 @@
 // to them. Prints a table (one row per shape and condition, one child process each) and a
 // summary per condition. Deterministic: the same seeds give the same table.
 //
-// Shapes: tubes along known curves (their skeleton is the curve) and real models from
+// Shapes: tubes along known curves (their skeleton is the curve; among them thin legs on a
+// thick body, two close parallel tubes, three rings of genus 3) and real models from
 // Debian's libcgal-demo (known cycles; tips where the anatomy says). Conditions: clean;
 // Gaussian noise of 0.5, 1, 2% of the bounding-box diagonal (per coordinate); 1% and 5%
 // outliers; half the points in 10% of the surface; virtual scans from 1 and 4 views; five
 // scans misaligned by 0.5% and 1% (paper Fig. 9).
 //
-// Columns: cycles and tips found / expected ('!' = wrong); distance of the bones to the
+// Columns: cycles, tips and connected parts found / expected ('!' = wrong); distance of the bones to the
 // known centre curve, mean and max, in % of the diagonal; share of bone length inside the
 // shape; the tip gap (mean distance from each end of the shape to the nearest skeleton
 // tip, % of the diagonal) without and with tip extension; warnings of the quality report;
@@ -66,6 +67,7 @@ constexpr int kUnknown = -1;
 struct Subject {
     std::string name;
     int cycles = kUnknown, tips = kUnknown;
+    int components = 1;
     double area = 0.0;
     std::function<PointList(std::size_t n, std::uint32_t seed)> sample;
     std::function<bool(const Point&)> inside;             // empty: not known
@@ -103,9 +105,10 @@ PointList tubeEnds(const std::vector<Tube>& tubes) {
     return ends;
 }
 
-Subject tubeSubject(const std::string& name, const std::vector<Tube>& tubes, int cycles, int tips) {
+Subject tubeSubject(const std::string& name, const std::vector<Tube>& tubes, int cycles, int tips, int components = 1) {
     Subject s;
     s.name = name;
+    s.components = components;
     s.cycles = cycles;
     s.tips = tips;
     for (const Tube& t : tubes) {
@@ -167,6 +170,20 @@ std::vector<Subject> knownShapes() {
         for (double side : {-0.15, 0.15}) animal.push_back({{{Point(x, side, 0), Point(x, side, -1.0)}}, 0.045});
     }
     subjects.push_back(tubeSubject("thin legs, thick body", animal, 0, 6));
+    // Two parallel tubes whose surfaces are 0.06 apart (three node spacings): two parts.
+    subjects.push_back(tubeSubject("two close tubes",
+                                   {{{{Point(-0.14, 0, 0), Point(-0.14, 0, 1.6)}}, 0.08},
+                                    {{{Point(0.14, 0, 0), Point(0.14, 0, 1.6)}}, 0.08}},
+                                   0, 4, 2));
+    // Three rings in a row, each joined to the next by a short bar: genus 3.
+    Polyline three;
+    for (double x : {-1.3, 0.0, 1.3}) {
+        const Polyline ring = shapes::circle(Point(x, 0, 0), 0.5);
+        three.insert(three.end(), ring.begin(), ring.end());
+    }
+    three.push_back({Point(-0.8, 0, 0), Point(-0.5, 0, 0)});
+    three.push_back({Point(0.5, 0, 0), Point(0.8, 0, 0)});
+    subjects.push_back(tubeSubject("genus 3 (three rings)", {{three, 0.12}}, 3, 0));
     return subjects;
 }
 
@@ -274,7 +291,7 @@ std::vector<Condition> conditions() {
 }
 
 struct Row {
-    int points = 0, cycles = 0, tips = 0, warnings = 0;
+    int points = 0, cycles = 0, tips = 0, components = 0, warnings = 0;
     double meanDistance = -1, maxDistance = -1, inside = -1;  // -1: not measurable
     double gapBefore = -1, gapAfter = -1;
     double seconds = 0;
@@ -330,6 +347,7 @@ Row measure(const Subject& subject, const Condition& condition, std::size_t n, c
     const SkeletonTopology topology = analyseTopology(skeleton);
     row.cycles = topology.cycles;
     row.tips = topology.tips;
+    row.components = topology.components;
     row.warnings = int(result.quality.warnings().size());
     const std::vector<BoneSample> samples = sampleBones(skeleton, diagonal / 400.0);
     double totalLength = 0.0, insideLength = 0.0, distanceSum = 0.0, maxDistance = 0.0;
@@ -436,6 +454,7 @@ int main(int argc, char** argv) {
     SkeletonParameters pipeline = paper ? SkeletonParameters::paper() : SkeletonParameters{};
     if (std::find(args.begin(), args.end(), "--no-refine") != args.end()) pipeline.thinning.refine = false;
     if (std::find(args.begin(), args.end(), "--no-recentre") != args.end()) pipeline.thinning.recentre = false;
+    if (std::find(args.begin(), args.end(), "--extend-tips") != args.end()) pipeline.thinning.extendTips = true;
     std::vector<Subject> subjects = knownShapes();
     const std::vector<std::string> models{"elephant", "knot1", "eight", "hand"};
     const std::filesystem::path folder = extractModels(models);
@@ -459,8 +478,8 @@ int main(int argc, char** argv) {
     std::printf("Skeleton robustness, %s pipeline, %zu points per clean sample, %ld cores. Distances and gaps in %% of "
                 "the bounding-box diagonal.\n",
                 paper ? "the paper's" : "the default", n, sysconf(_SC_NPROCESSORS_ONLN));
-    std::printf("%-24s %-16s %6s %6s %6s %6s %6s %7s %13s %4s %6s\n", "shape", "condition", "points", "cycles",
-                "tips", "mean d", "max d", "inside", "tip gap", "warn", "time");
+    std::printf("%-24s %-16s %6s %6s %6s %5s %6s %6s %7s %13s %4s %6s\n", "shape", "condition", "points", "cycles",
+                "tips", "parts", "mean d", "max d", "inside", "tip gap", "warn", "time");
     std::map<std::string, Tally> byCondition;
     for (const Subject& subject : subjects) {
         for (const Condition& condition : conditions()) {
@@ -471,14 +490,16 @@ int main(int argc, char** argv) {
                 continue;
             }
             const std::string gap = row.gapBefore < 0 ? "-" : number(row.gapBefore) + "->" + number(row.gapAfter);
-            std::printf("%-24s %-16s %6d %6s %6s %6s %6s %6s%% %13s %4d %5.1fs\n", subject.name.c_str(), condition.name,
-                        row.points, found(row.cycles, subject.cycles).c_str(), found(row.tips, subject.tips).c_str(),
+            std::printf("%-24s %-16s %6d %6s %6s %5s %6s %6s %6s%% %13s %4d %5.1fs\n", subject.name.c_str(),
+                        condition.name, row.points, found(row.cycles, subject.cycles).c_str(),
+                        found(row.tips, subject.tips).c_str(), found(row.components, subject.components).c_str(),
                         number(row.meanDistance).c_str(), number(row.maxDistance).c_str(),
                         number(row.inside, "%.0f").c_str(), gap.c_str(), row.warnings, row.seconds);
             std::fflush(stdout);
             Tally& t = byCondition[condition.name];
             ++t.cases;
-            t.right += row.cycles == subject.cycles && (subject.tips == kUnknown || row.tips == subject.tips);
+            t.right += row.cycles == subject.cycles && row.components == subject.components &&
+                       (subject.tips == kUnknown || row.tips == subject.tips);
             if (row.gapBefore >= 0) t.gapBefore += row.gapBefore, t.gapAfter += row.gapAfter, ++t.gaps;
             if (row.meanDistance >= 0) t.meanDistance += row.meanDistance, ++t.distances;
             if (row.inside >= 0) t.inside += row.inside, ++t.insides;
