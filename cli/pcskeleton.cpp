@@ -195,11 +195,7 @@ bool parseArguments(int argc, char** argv, Options& options) {
         } else if (arg == "--keep-outliers") {
             c.outliers.detect = false;
         } else if (arg == "--paper") {
-            const SkeletonParameters paper = SkeletonParameters::paper();
-            c.outliers.detect = paper.contraction.outliers.detect;
-            options.parameters.thinning.refine = paper.thinning.refine;
-            options.parameters.thinning.extendTips = paper.thinning.extendTips;
-            options.parameters.thinning.recentre = paper.thinning.recentre;
+            options.parameters.keepToThePaper();
         } else if (auto option = withValue.find(arg); option != withValue.end()) {
             if (i + 1 >= argc) throw UsageError(arg + " needs a value");
             option->second(argv[++i]);

@@ -37,13 +37,18 @@ struct SkeletonParameters {
     ContractionParameters contraction;
     ThinningParameters thinning;
 
-    // The paper's pipeline exactly: no outlier detection, refinement or tip extension.
+    // Turns off every step that is not the paper's (outlier detection, re-centring,
+    // refinement, tip extension), keeping every other setting.
+    void keepToThePaper() {
+        contraction.outliers.detect = false;
+        thinning.recentre = false;
+        thinning.refine = false;
+        thinning.extendTips = false;
+    }
+    // The paper's pipeline exactly, with its defaults.
     static SkeletonParameters paper() {
         SkeletonParameters p;
-        p.contraction.outliers.detect = false;
-        p.thinning.refine = false;
-        p.thinning.extendTips = false;
-        p.thinning.recentre = false;
+        p.keepToThePaper();
         return p;
     }
 };
