@@ -20,8 +20,6 @@ using pcskeleton::Parameter;
 
 namespace {
 
-QString label(Parameter parameter) { return parameterLabel(parameter); }
-
 const char* const kPaperReference =
     "<br><br>See: <i>Junjie Cao, Andrea Tagliasacchi, Matt Olson, Hao Zhang, Zhixun Su</i><br>"
     "<b>\"Point Cloud Skeletons via Laplacian-Based Contraction\"</b><br>"
@@ -39,7 +37,8 @@ const char* const kNeighbourHelp =
     "lower it if close-by parts (fingers, claws) get connected.";
 
 void addOutlierParameter(RichParameterList& list) {
-    list.addParam(RichBool("detectOutliers", pcskeleton::OutlierParameters().detect, label(Parameter::OutlierDetection),
+    list.addParam(RichBool("detectOutliers", pcskeleton::OutlierParameters().detect,
+        parameterLabel(Parameter::OutlierDetection),
         "Sets aside, before the 1-rings, points that do not belong to the sampled surface: isolated points and "
         "small sparse clusters, judged against the cloud's own point spacing. They get no node (grey in the "
         "segments layer) and are counted in the log; the layer itself is not changed. Untick to keep every "
@@ -48,28 +47,34 @@ void addOutlierParameter(RichParameterList& list) {
 
 void addContractionParameters(RichParameterList& list) {
     const pcskeleton::ContractionParameters d;
-    list.addParam(RichInt("k", d.neighbourCount, label(Parameter::NeighbourCount), kNeighbourHelp));
-    list.addParam(RichFloat("contractionWeight", float(d.initialContractionWeight), label(Parameter::InitialContractionWeight),
+    list.addParam(RichInt("k", d.neighbourCount, parameterLabel(Parameter::NeighbourCount), kNeighbourHelp));
+    list.addParam(RichFloat("contractionWeight", float(d.initialContractionWeight),
+        parameterLabel(Parameter::InitialContractionWeight),
         "Strength of the Laplacian (shrinking) term in the first iteration, in the normalised frame where the "
         "cloud's longest side is 1.6. 0 = automatic: 1/(5 S0), S0 being the mean 1-ring size. Too high pulls thin "
         "parts into thick ones (paper Fig. 4d); too low lets tips stick out of the shape (Fig. 4a)."));
-    list.addParam(RichFloat("attractionWeight", float(d.initialAttractionWeight), label(Parameter::InitialAttractionWeight),
+    list.addParam(RichFloat("attractionWeight", float(d.initialAttractionWeight),
+        parameterLabel(Parameter::InitialAttractionWeight),
         "How strongly points are held at their positions. Acts opposite to W_L0 (paper Fig. 4e-h)."));
-    list.addParam(RichFloat("contractionScale", float(d.contractionScale), label(Parameter::ContractionScale),
+    list.addParam(RichFloat("contractionScale", float(d.contractionScale), parameterLabel(Parameter::ContractionScale),
         "W_L is multiplied by this after every iteration. The paper uses 3; use 2 for shapes with thin parts "
         "between thick ones (paper Fig. 10), at the cost of an extra iteration."));
     // An integer on purpose: MeshLab's dialog shows floats with 3 digits, and would read
     // 2048 back as 2050 on Apply.
-    list.addParam(RichInt("maxContractionWeight", int(d.maxContractionWeight), label(Parameter::MaxContractionWeight),
+    list.addParam(RichInt("maxContractionWeight", int(d.maxContractionWeight),
+        parameterLabel(Parameter::MaxContractionWeight),
         "Upper limit of the contraction weight, for numerical stability."));
-    list.addParam(RichFloat("maxAttractionWeight", float(d.maxAttractionWeight), label(Parameter::MaxAttractionWeight),
+    list.addParam(RichFloat("maxAttractionWeight", float(d.maxAttractionWeight),
+        parameterLabel(Parameter::MaxAttractionWeight),
         "Upper limit of a point's attraction weight (it grows as the point's 1-ring shrinks)."));
-    list.addParam(RichFloat("laplacianRowLimit", float(d.laplacianRowLimit), label(Parameter::LaplacianRowLimit),
+    list.addParam(RichFloat("laplacianRowLimit", float(d.laplacianRowLimit),
+        parameterLabel(Parameter::LaplacianRowLimit),
         "A Laplacian row whose weights add up to more than this is scaled down; guards against the huge "
         "cotangents of nearly flat 1-ring triangles."));
-    list.addParam(RichInt("maxIterations", d.maxIterations, label(Parameter::MaxIterations),
+    list.addParam(RichInt("maxIterations", d.maxIterations, parameterLabel(Parameter::MaxIterations),
         "Contraction stops after this many iterations at the latest (most models converge in under 5)."));
-    list.addParam(RichFloat("terminationThreshold", float(d.terminationThreshold), label(Parameter::TerminationThreshold),
+    list.addParam(RichFloat("terminationThreshold", float(d.terminationThreshold),
+        parameterLabel(Parameter::TerminationThreshold),
         "Contraction stops when the total 1-ring size shrank by less than this fraction of its initial value "
         "in the last iteration."));
     addOutlierParameter(list);
@@ -92,7 +97,7 @@ pcskeleton::ContractionParameters readContractionParameters(const RichParameterL
 
 void addThinningParameters(RichParameterList& list) {
     const pcskeleton::ThinningParameters d;
-    list.addParam(RichFloat("sampleRadius", float(d.sampleRadius), label(Parameter::NodeSpacing),
+    list.addParam(RichFloat("sampleRadius", float(d.sampleRadius), parameterLabel(Parameter::NodeSpacing),
         "Radius of the balls that sample the contracted points into skeleton nodes, as a fraction of the "
         "bounding-box diagonal (the paper's 0.02). Larger: fewer nodes, and parts or holes closer than this "
         "merge; smaller: more nodes, and noise may survive as short spurs or tiny loops."));
@@ -104,7 +109,7 @@ void addThinningParameters(RichParameterList& list) {
         "Where a node's points cover one side of its bone only (a scan from one side, a hole), their centre lies "
         "on the visible wall: the node moves to the centre of the circle through them, with that circle's "
         "radius. Nodes whose points surround them stay at their centre, as in the paper."));
-    list.addParam(RichBool("refine", d.refine, label(Parameter::Refinement),
+    list.addParam(RichBool("refine", d.refine, parameterLabel(Parameter::Refinement),
         "Cleans what noise leaves: limbs shorter than the body is thick where they join are absorbed into the "
         "junction, loops smaller than the tube around them collapse to a node, junctions closer than the node "
         "spacing merge. On by default: on noisy and misaligned scans it removes spurs and false loops. Untick "
@@ -134,22 +139,22 @@ pcskeleton::ThinningParameters readThinningParameters(const RichParameterList& l
 
 void addReconstructionParameters(RichParameterList& list) {
     const pcskeleton::ReconstructionParameters d;
-    list.addParam(RichInt("resolution", d.resolution, label(Parameter::Resolution),
+    list.addParam(RichInt("resolution", d.resolution, parameterLabel(Parameter::Resolution),
         QString("Grid cells along the longest side (%1 to %2). Finer shows more detail; memory and time "
                 "grow with its cube (about 1 GB and 10 s at 256 for a ring-shaped object).")
             .arg(pcskeleton::kMinimumResolution).arg(pcskeleton::kMaximumResolution)));
-    list.addParam(RichFloat("smoothWeight", float(d.smoothWeight), label(Parameter::SmoothWeight),
+    list.addParam(RichFloat("smoothWeight", float(d.smoothWeight), parameterLabel(Parameter::SmoothWeight),
         "Weight of the field's smoothness (the integral of its squared Laplacian). Raise it for noisy "
         "scans; lower it to follow the points more closely."));
-    list.addParam(RichFloat("surfaceWeight", float(d.surfaceWeight), label(Parameter::SurfaceWeight),
+    list.addParam(RichFloat("surfaceWeight", float(d.surfaceWeight), parameterLabel(Parameter::SurfaceWeight),
         "How strongly the surface passes through the points (field 0 there)."));
-    list.addParam(RichFloat("skeletonWeight", float(d.skeletonWeight), label(Parameter::SkeletonWeight),
+    list.addParam(RichFloat("skeletonWeight", float(d.skeletonWeight), parameterLabel(Parameter::SkeletonWeight),
         "How strongly the field equals minus the node radius along the bones. Raise it if the surface "
         "does not bridge a gap the skeleton crosses; the radius sets how thick the bridge is."));
-    list.addParam(RichFloat("outsideWeight", float(d.outsideWeight), label(Parameter::OutsideWeight),
+    list.addParam(RichFloat("outsideWeight", float(d.outsideWeight), parameterLabel(Parameter::OutsideWeight),
         "How strongly the field is positive far from the skeleton (a weak hint, the paper's 0.005). Raise "
         "it if the surface bulges into empty space or closes holes the skeleton leaves open."));
-    list.addParam(RichFloat("outsideRadii", float(d.outsideRadii), label(Parameter::OutsideDistance),
+    list.addParam(RichFloat("outsideRadii", float(d.outsideRadii), parameterLabel(Parameter::OutsideDistance),
         "Space farther than K node radii from the skeleton counts as outside the shape (the paper's 4). "
         "Lower it to keep gaps open next to thin parts."));
 }
@@ -352,7 +357,7 @@ void FilterPCSkeletonPlugin::initParameterSet(QAction* action, MeshDocument& md,
         case FP_SKELETON_FROM_CONTRACTED:
             parameters.addParam(RichMesh("sourceLayer", likelySourceOf(md, md.mm()), &md, "Original points",
                 "The layer that was contracted: its points give the 1-rings, the node positions and the radii."));
-            parameters.addParam(RichInt("k", 0, label(Parameter::NeighbourCount),
+            parameters.addParam(RichInt("k", 0, parameterLabel(Parameter::NeighbourCount),
                 QString(kNeighbourHelp) + " Use the value the contraction used."));
             addOutlierParameter(parameters);
             addThinningParameters(parameters);
@@ -496,14 +501,10 @@ bool FilterPCSkeletonPlugin::computeSkeleton(MeshDocument& md, const RichParamet
                                              vcg::CallBackPos* cb) {
     MeshModel& source = *md.mm();
     const LayerPoints input = collectPoints(source.cm);
-    pcskeleton::ContractionParameters settings = readContractionParameters(parameters);
-    pcskeleton::ThinningParameters thinning = readThinningParameters(parameters);
-    if (parameters.getBool("paperPipeline")) {
-        const pcskeleton::SkeletonParameters paper = pcskeleton::SkeletonParameters::paper();
-        settings.outliers = paper.contraction.outliers;
-        thinning = paper.thinning;
-        thinning.sampleRadius = parameters.getFloat("sampleRadius");
-    }
+    pcskeleton::SkeletonParameters pipeline{readContractionParameters(parameters), readThinningParameters(parameters)};
+    if (parameters.getBool("paperPipeline")) pipeline.keepToThePaper();
+    const pcskeleton::ContractionParameters& settings = pipeline.contraction;
+    const pcskeleton::ThinningParameters& thinning = pipeline.thinning;
     const pcskeleton::ProgressCallback progress = progressOf(cb);
     pcskeleton::checkThinningParameters(thinning);  // before the contraction, not after it
 
