@@ -104,7 +104,6 @@ SkeletonResult skeletonFromContractedPoints(const PointList& input, const PointL
                 << ".";
         throw InvalidInput(message.str(), {Remedy::take(Step::ContractAgain)});
     }
-    checkOutlierParameters(contraction.outliers);
     const int k = contraction.neighbourCount;
     const int neighbours = k > 0 ? k : defaultNeighbourCount(input.size());
     const NormalizedCloud cloud = normalizeCloud(input, std::size_t(neighbours) + 1, contraction.outliers);

@@ -6,6 +6,7 @@
 #include "pcskeleton/internal/spatial_index.h"
 
 #include <algorithm>
+#include <array>
 
 namespace pcskeleton {
 
@@ -39,13 +40,21 @@ std::vector<char> findOutliers(const PointList& points, const OutlierParameters&
     std::vector<char> outlier(n, 0);
     if (!parameters.detect || n < 2 * (kNeighbours + 1)) return outlier;
 
+    // Each point's k nearest neighbours, row by row in one array (k + 1 found, the point
+    // itself first, which the row leaves out).
     const PointIndex index(points);
-    std::vector<std::vector<int>> neighbours(n);
+    std::vector<int> neighbours(n * kNeighbours);
+    auto row = [&](std::size_t i) { return neighbours.begin() + std::ptrdiff_t(i * kNeighbours); };
     std::vector<double> kthDistance(n);
-#pragma omp parallel for schedule(static)
-    for (long i = 0; i < long(n); ++i) {
-        index.nearest(points[i], kNeighbours + 1, neighbours[i]);  // the point itself comes first
-        kthDistance[i] = (points[neighbours[i].back()] - points[i]).norm();
+#pragma omp parallel
+    {
+        std::vector<int> found;
+#pragma omp for schedule(static)
+        for (long i = 0; i < long(n); ++i) {
+            index.nearest(points[i], kNeighbours + 1, found);
+            std::copy(found.begin() + 1, found.end(), row(std::size_t(i)));
+            kthDistance[i] = (points[found.back()] - points[i]).norm();
+        }
     }
     const double reach = parameters.isolationFactor * median(kthDistance);
     for (std::size_t i = 0; i < n; ++i) outlier[i] = kthDistance[i] > reach;
@@ -57,13 +66,14 @@ std::vector<char> findOutliers(const PointList& points, const OutlierParameters&
         std::vector<char> found = outlier;
 #pragma omp parallel for schedule(static)
         for (long i = 0; i < long(n); ++i) {
-            std::vector<double> around;
-            for (std::size_t a = 1; a < neighbours[i].size(); ++a) {
-                if (!outlier[neighbours[i][a]]) around.push_back(kthDistance[neighbours[i][a]]);
+            std::array<double, kNeighbours> around;
+            std::size_t count = 0;
+            for (auto j = row(std::size_t(i)); j != row(std::size_t(i) + 1); ++j) {
+                if (!outlier[*j]) around[count++] = kthDistance[*j];
             }
-            if (around.empty()) continue;
-            const auto quartile = around.begin() + std::ptrdiff_t(3 * around.size() / 4);
-            std::nth_element(around.begin(), quartile, around.end());
+            if (count == 0) continue;
+            const auto quartile = around.begin() + std::ptrdiff_t(3 * count / 4);
+            std::nth_element(around.begin(), quartile, around.begin() + std::ptrdiff_t(count));
             if (kthDistance[i] > parameters.localFactor * *quartile) found[i] = 1;
         }
         if (found == outlier) break;
@@ -74,8 +84,8 @@ std::vector<char> findOutliers(const PointList& points, const OutlierParameters&
     DisjointSets groups(n);
     for (std::size_t i = 0; i < n; ++i) {
         if (outlier[i]) continue;
-        for (int j : neighbours[i]) {
-            if (!outlier[j] && (points[j] - points[i]).norm() <= reach) groups.unite(int(i), j);
+        for (auto j = row(i); j != row(i + 1); ++j) {
+            if (!outlier[*j] && (points[*j] - points[i]).norm() <= reach) groups.unite(int(i), *j);
         }
     }
     std::vector<std::size_t> groupSize(n, 0);
