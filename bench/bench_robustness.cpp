@@ -31,7 +31,7 @@
 
 #include <pcskeleton/curve_skeleton.h>
 #include "support/sampled_shapes.h"
-#include <pcskeleton/io/skeleton_io.h>
+#include <pcskeleton/io/point_cloud_io.h>
 #include "support/scan_simulation.h"
 #include <pcskeleton/analysis/tip_extension.h>
 #include <pcskeleton/core/outlier_detection.h>

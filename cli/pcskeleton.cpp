@@ -1,6 +1,7 @@
 // pcskeleton: point cloud in, curve skeleton out, from the command line. Built from
 // vcg_ext alone (no Qt, no X server) for pipelines, benchmarks and headless machines.
 #include <pcskeleton/curve_skeleton.h>
+#include <pcskeleton/io/point_cloud_io.h>
 #include <pcskeleton/io/skeleton_io.h>
 
 #include <cstdio>

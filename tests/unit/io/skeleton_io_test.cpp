@@ -1,6 +1,7 @@
 // Skeleton and point-set files: what is written is read back as the same graph, and
 // unreadable files give a clear error.
 #include "support/sampled_shapes.h"
+#include <pcskeleton/io/point_cloud_io.h>
 #include <pcskeleton/io/skeleton_io.h>
 
 #include <gtest/gtest.h>

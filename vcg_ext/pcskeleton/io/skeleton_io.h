@@ -1,8 +1,7 @@
-// Files in and out: point sets for the command-line tool, skeletons in the formats
-// other tools read. Errors are thrown as InvalidInput with a sentence for the user.
+// Skeleton files, in the formats other tools read. Readers check everything they use (see
+// input_file.h and ply_reader.h) and throw InvalidInput naming the line or byte offset;
+// writers replace a file only once the new one is complete.
 //
-// Point sets: .ply (ascii or binary), .off (also NOFF/COFF), .obj (faces ignored),
-//             .xyz/.txt/.pts (one point per line, first three numbers; more are ignored).
 // Skeletons:  .ply  vertex x y z radius quality(= radius) + element edge (vertex1 vertex2);
 //                   MeshLab reads it back with its edges, the radius in vertex quality.
 //             .obj  v x y z lines and l a b lines (1-based).
@@ -16,10 +15,6 @@
 #include <string>
 
 namespace pcskeleton {
-
-PointList readPointCloud(const std::string& path);
-// .ply (binary) or .xyz, by extension.
-void writePointCloud(const PointList& points, const std::string& path);
 
 SkeletonGraph readSkeleton(const std::string& path);
 void writeSkeleton(const SkeletonGraph& skeleton, const std::string& path);

@@ -1,0 +1,74 @@
+// A file read front to back through a buffer, knowing where it is. Every reader of the
+// library reads through it, so that a malformed file cannot crash us or make us allocate
+// what it merely claims: error messages name the line or the byte offset, and a count
+// declared in a header can be checked against the bytes that are really left.
+#pragma once
+
+#include "pcskeleton/core/errors.h"
+
+#include <cstdint>
+#include <cstdio>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace pcskeleton {
+
+class InputFile {
+public:
+    // Refuses a missing, unreadable or non-regular file (a directory) with InvalidInput.
+    explicit InputFile(const std::string& path);
+    ~InputFile();
+    InputFile(const InputFile&) = delete;
+    InputFile& operator=(const InputFile&) = delete;
+
+    const std::string& path() const { return path_; }
+    std::uint64_t size() const { return size_; }
+    std::uint64_t offset() const { return offset_; }
+    std::uint64_t remaining() const { return size_ - offset_; }
+    // 1-based number of the last line readLine() returned.
+    std::uint64_t lineNumber() const { return lineNumber_; }
+
+    // The next line without its '\n' or "\r\n"; false at the end of the file. A line longer
+    // than kMaxLineLength is refused rather than held in memory whole.
+    bool readLine(std::string& line);
+    // Exactly n bytes, or false (and nothing consumed that matters) when fewer are left.
+    bool readBytes(void* out, std::size_t n);
+
+    // "Cannot read '<path>': <why>" as InvalidInput.
+    [[noreturn]] void fail(const std::string& why) const;
+    // The same, prefixed with "line N: ".
+    [[noreturn]] void failAtLine(const std::string& why) const;
+
+    static constexpr std::size_t kMaxLineLength = 64u << 20;
+
+private:
+    bool fill();  // false when nothing more can be read
+
+    std::string path_;
+    std::FILE* file_ = nullptr;
+    std::uint64_t size_ = 0, offset_ = 0, lineNumber_ = 0;
+    std::vector<char> buffer_;
+    std::size_t begin_ = 0, end_ = 0;
+};
+
+// Reads the next number of a text line and moves the cursor past it; false when the
+// line has no further number or when one is glued to other characters ("1.5abc").
+// Separators are blanks and commas. "nan" and "inf" are read, for the checks to name them.
+bool readNumber(const char*& cursor, double& value);
+
+// The lower-case extension of a file name without the dot ("" if none).
+std::string extensionOf(const std::string& path);
+
+// True when both names lead to the same existing file (hard links and "./a" vs "a"
+// included); false when either does not exist.
+bool sameFile(const std::string& a, const std::string& b);
+
+bool fileExists(const std::string& path);
+
+// Writes a file through write(temporaryPath) and renames it to path only once it is
+// complete, so that a failed or interrupted write never leaves a truncated file in place
+// of an existing one. write() throws (InvalidInput) on failure; the temporary is removed.
+void writeFileAtomically(const std::string& path, const std::function<void(const std::string&)>& write);
+
+}  // namespace pcskeleton

@@ -1,0 +1,176 @@
+#include "pcskeleton/io/point_cloud_io.h"
+
+#include "pcskeleton/io/input_file.h"
+#include "pcskeleton/io/ply_reader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+
+namespace pcskeleton {
+
+namespace {
+
+// Never reserve more than the file could hold, whatever a header claims.
+void reserveFor(PointList& points, std::uint64_t declared, const InputFile& file, std::uint64_t minimumBytes) {
+    points.reserve(std::size_t(std::min(declared, file.remaining() / std::max<std::uint64_t>(minimumBytes, 1))));
+}
+
+PointList readPlyPoints(InputFile& file) {
+    PointList points;
+    bool sawVertices = false;
+    PlyElementReader vertices{"vertex", {"x", "y", "z"}, nullptr, nullptr};
+    vertices.begin = [&](const PlyElement& element) {
+        if (!element.has("x") || !element.has("y") || !element.has("z")) {
+            file.fail("the vertex element has no x, y and z properties.");
+        }
+        sawVertices = true;
+        points.reserve(std::size_t(element.count));  // checked against the file's size already
+    };
+    vertices.record = [&](const double* xyz) { points.emplace_back(xyz[0], xyz[1], xyz[2]); };
+    readPly(file, {vertices});
+    if (!sawVertices) file.fail("the file has no vertex element.");
+    return points;
+}
+
+PointList readXyz(InputFile& file) {
+    PointList points;
+    std::string line;
+    while (file.readLine(line)) {
+        const auto first = line.find_first_not_of(" \t");
+        if (first == std::string::npos || line[first] == '#') continue;
+        const char* cursor = line.c_str();
+        Point p;
+        if (!readNumber(cursor, p.x()) || !readNumber(cursor, p.y()) || !readNumber(cursor, p.z())) {
+            file.failAtLine("a point line starts with three numbers (x y z).");
+        }
+        points.push_back(p);
+    }
+    return points;
+}
+
+// The vertices of an OFF file, read leniently: vcglib's reader rejects the two-count
+// headers ("NOFF / 9471 0") of the paper's own files and degenerate faces, which a point
+// cloud does not need anyway. Extra values per vertex (normals, colours) are ignored.
+PointList readOffVertices(InputFile& file) {
+    std::string line;
+    auto nextLine = [&]() {
+        while (file.readLine(line)) {
+            line = line.substr(0, line.find('#'));
+            if (line.find_first_not_of(" \t") != std::string::npos) return true;
+        }
+        return false;
+    };
+    if (!nextLine()) file.fail("the file is empty.");
+    const auto keywordStart = line.find_first_not_of(" \t");
+    const auto keywordEnd = std::min(line.find_first_of(" \t", keywordStart), line.size());
+    const std::string keyword = line.substr(keywordStart, keywordEnd - keywordStart);
+    if (keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0) {
+        file.fail("an OFF file starts with OFF (or NOFF, COFF, ...).");
+    }
+    if (keyword.find('4') != std::string::npos || keyword.find('n') != std::string::npos) {
+        file.fail("OFF files with other than three dimensions are not supported.");
+    }
+    const char* cursor = line.c_str() + keywordEnd;
+    double count = -1;
+    if (!readNumber(cursor, count)) {
+        if (!nextLine()) file.fail("the vertex count is missing.");
+        cursor = line.c_str();
+        if (!readNumber(cursor, count)) file.failAtLine("the vertex count is missing.");
+    }
+    if (count < 0 || count != std::floor(count) || count > 1e18) {
+        file.failAtLine("the vertex count is not a whole number of vertices.");
+    }
+    const std::uint64_t vertices = std::uint64_t(count);
+    PointList points;
+    reserveFor(points, vertices, file, 6);  // "0 0 0\n"
+    for (std::uint64_t i = 0; i < vertices; ++i) {
+        if (!nextLine()) {
+            file.fail("the file ends at vertex " + std::to_string(i) + " of " + std::to_string(vertices) + ".");
+        }
+        cursor = line.c_str();
+        Point p;
+        if (!readNumber(cursor, p.x()) || !readNumber(cursor, p.y()) || !readNumber(cursor, p.z())) {
+            file.failAtLine("vertex " + std::to_string(i) + " of " + std::to_string(vertices) +
+                            " does not have three coordinates.");
+        }
+        points.push_back(p);
+    }
+    return points;
+}
+
+// Only the v lines of an OBJ file. tinyobjloader (in Debian) was considered: it reads a
+// malformed coordinate as 0 without a word and reports no line numbers, and a point
+// cloud needs none of what it adds (faces, materials).
+PointList readObjVertices(InputFile& file) {
+    PointList points;
+    std::string line;
+    while (file.readLine(line)) {
+        const char* cursor = line.c_str();
+        while (*cursor == ' ' || *cursor == '\t') ++cursor;
+        if (cursor[0] != 'v' || (cursor[1] != ' ' && cursor[1] != '\t')) continue;
+        ++cursor;
+        Point p;
+        if (!readNumber(cursor, p.x()) || !readNumber(cursor, p.y()) || !readNumber(cursor, p.z())) {
+            file.failAtLine("a vertex (v) needs three numbers.");
+        }
+        points.push_back(p);
+    }
+    return points;
+}
+
+void writePlyPoints(const PointList& points, const std::string& path) {
+    std::FILE* out = std::fopen(path.c_str(), "wb");
+    if (!out) throw InvalidInput("Cannot write '" + path + "': the file cannot be created.");
+    std::fprintf(out,
+                 "ply\nformat binary_little_endian 1.0\nelement vertex %zu\n"
+                 "property double x\nproperty double y\nproperty double z\nend_header\n",
+                 points.size());
+    bool ok = true;
+    for (const Point& p : points) ok = ok && std::fwrite(p.data(), sizeof(double), 3, out) == 3;
+    ok = std::fclose(out) == 0 && ok;
+    if (!ok) throw InvalidInput("Cannot write '" + path + "': writing failed (disk full?).");
+}
+
+void writeXyzPoints(const PointList& points, const std::string& path) {
+    std::ofstream out(path);
+    if (!out) throw InvalidInput("Cannot write '" + path + "': the file cannot be created.");
+    out << std::setprecision(17);
+    for (const Point& p : points) out << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+    out.close();
+    if (!out) throw InvalidInput("Cannot write '" + path + "': writing failed (disk full?).");
+}
+
+}  // namespace
+
+bool isPointCloudFileName(const std::string& path) {
+    const std::string ext = extensionOf(path);
+    return ext == "ply" || ext == "off" || ext == "obj" || ext == "xyz" || ext == "txt" || ext == "pts";
+}
+
+PointList readPointCloud(const std::string& path) {
+    if (!isPointCloudFileName(path)) {
+        throw InvalidInput("Cannot read '" + path + "': unknown extension; use .ply, .off, .obj, .xyz, .txt or .pts.");
+    }
+    InputFile file(path);
+    const std::string ext = extensionOf(path);
+    if (ext == "ply") return readPlyPoints(file);
+    if (ext == "off") return readOffVertices(file);
+    if (ext == "obj") return readObjVertices(file);
+    return readXyz(file);
+}
+
+void writePointCloud(const PointList& points, const std::string& path) {
+    const std::string ext = extensionOf(path);
+    if (ext != "ply" && ext != "xyz") {
+        throw InvalidInput("Cannot write '" + path + "': point sets are written as .ply or .xyz.");
+    }
+    writeFileAtomically(path, [&](const std::string& temporary) {
+        if (ext == "ply") writePlyPoints(points, temporary);
+        else writeXyzPoints(points, temporary);
+    });
+}
+
+}  // namespace pcskeleton
