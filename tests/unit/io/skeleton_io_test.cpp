@@ -1,33 +1,19 @@
-// Skeleton and point-set files: what is written is read back as the same graph, and
-// unreadable files give a clear error.
-#include "support/sampled_shapes.h"
-#include <pcskeleton/io/point_cloud_io.h>
+// Skeleton files: what is written is read back as the same graph, and unreadable files
+// give a clear error.
 #include <pcskeleton/io/skeleton_io.h>
+
+#include "support/temp_dir.h"
 
 #include <gtest/gtest.h>
 
-#include <cstdio>
+#include <filesystem>
 #include <fstream>
-#include <unistd.h>
 
 using namespace pcskeleton;
+using pcskeleton::testing::TempDir;
+using pcskeleton::testing::writeText;
 
 namespace {
-
-class TempDir {
-public:
-    TempDir() {
-        char pattern[] = "/tmp/pcskeleton_io_XXXXXX";
-        path_ = mkdtemp(pattern);
-    }
-    ~TempDir() { std::system(("rm -rf '" + path_ + "'").c_str()); }
-    std::string file(const std::string& name) const { return path_ + "/" + name; }
-
-private:
-    std::string path_;
-};
-
-void writeText(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
 
 // A graph with a cycle, a junction, a tip and an isolated node.
 SkeletonGraph sampleSkeleton() {
@@ -36,15 +22,6 @@ SkeletonGraph sampleSkeleton() {
     s.radii = {0.1, 0.2, 0.3, 0.4, 0.05, 0.25};
     s.edges = {{0, 1}, {0, 3}, {1, 2}, {1, 4}, {2, 3}};
     return s;
-}
-
-std::string errorReading(const std::string& path) {
-    try {
-        readPointCloud(path);
-    } catch (const InvalidInput& e) {
-        return e.what();
-    }
-    return "";
 }
 
 }  // namespace
@@ -98,35 +75,37 @@ TEST(SkeletonFiles, BadSkeletonFilesAreRefused) {
     EXPECT_THROW(writeSkeleton(sampleSkeleton(), "/nonexistent-dir/s.cg"), InvalidInput);
 }
 
-TEST(PointFiles, BinaryPlyXyzOffAndObjAreRead) {
+TEST(SkeletonFiles, BinaryPlyAndMeshLabsQualityRadius) {
     TempDir dir;
-    const PointList cloud = shapes::sphere(200, 1.0);
-    writePointCloud(cloud, dir.file("c.ply"));  // binary
-    EXPECT_EQ(readPointCloud(dir.file("c.ply")), cloud);
-    writePointCloud(cloud, dir.file("c.xyz"));
-    const PointList xyz = readPointCloud(dir.file("c.xyz"));
-    ASSERT_EQ(xyz.size(), cloud.size());
-    for (std::size_t i = 0; i < cloud.size(); ++i) EXPECT_LT((xyz[i] - cloud[i]).norm(), 1e-12);
-
-    // The paper's own files: two counts, normals after the coordinates, faces ignored.
-    writeText(dir.file("n.off"), "NOFF\n3 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n");
-    EXPECT_EQ(readPointCloud(dir.file("n.off")).size(), 3u);
-    writeText(dir.file("m.off"), "OFF\n# comment\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n2 0 0\n");
-    EXPECT_EQ(readPointCloud(dir.file("m.off"))[3], Point(0, 0, 1));
-    writeText(dir.file("m.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 3 4\n");
-    EXPECT_EQ(readPointCloud(dir.file("m.obj")).size(), 4u);
-    writeText(dir.file("c.txt"), "# x y z\n1, 2, 3\n4 5 6 255 0 0\n");
-    EXPECT_EQ(readPointCloud(dir.file("c.txt"))[1], Point(4, 5, 6));
+    // MeshLab's own PLY export of a skeleton layer keeps the radius in quality only.
+    writeText(dir.file("q.ply"), "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\n"
+                                 "property float z\nproperty float quality\nelement edge 1\nproperty int vertex1\n"
+                                 "property int vertex2\nend_header\n0 0 0 0.5\n1 0 0 0.25\n0 1\n");
+    const SkeletonGraph q = readSkeleton(dir.file("q.ply"));
+    EXPECT_EQ(q.radii, (std::vector<double>{0.5, 0.25}));
+    EXPECT_EQ(q.edges, (std::vector<Edge>{{0, 1}}));
 }
 
-TEST(PointFiles, UnreadableFilesSayWhy) {
+TEST(SkeletonFiles, EdgesAndCountsAreChecked) {
     TempDir dir;
-    EXPECT_NE(errorReading(dir.file("none.ply")).find("cannot be opened"), std::string::npos);
-    EXPECT_NE(errorReading(dir.file("c.las")).find("unknown extension"), std::string::npos);
-    writeText(dir.file("short.off"), "OFF\n5 0 0\n0 0 0\n");
-    EXPECT_NE(errorReading(dir.file("short.off")).find("vertex 1 of 5"), std::string::npos);
-    writeText(dir.file("words.xyz"), "1 2 3\nhello world\n");
-    EXPECT_NE(errorReading(dir.file("words.xyz")).find("line 2"), std::string::npos);
-    writeText(dir.file("broken.ply"), "ply\nformat ascii 1.0\nelement vertex 3\nend_header\n");
-    EXPECT_NE(errorReading(dir.file("broken.ply")), "");
+    writeText(dir.file("e.ply"), "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\n"
+                                 "property float z\nelement edge 1\nproperty int vertex1\nproperty int vertex2\n"
+                                 "end_header\n0 0 0\n1 0 0\n0 2\n");
+    EXPECT_THROW(readSkeleton(dir.file("e.ply")), InvalidInput);
+    writeText(dir.file("c.cg"), "# D:3 NV:3 NE:1\nv 0 0 0\nv 1 0 0\ne 1 2\n");
+    EXPECT_THROW(readSkeleton(dir.file("c.cg")), InvalidInput);
+    // A relative index counts back from the vertices read so far, not from the file's end.
+    writeText(dir.file("r.obj"), "v 0 0 0\nv 1 0 0\nl 1 -1\nv 2 0 0\nl 2 3\n");
+    EXPECT_EQ(readSkeleton(dir.file("r.obj")).edges, (std::vector<Edge>{{0, 1}, {1, 2}}));
 }
+
+TEST(SkeletonFiles, WritingGoesThroughATemporaryThatDoesNotStay) {
+    TempDir dir;
+    writeText(dir.file("s.obj"), "old");
+    writeSkeleton(sampleSkeleton(), dir.file("s.obj"));
+    EXPECT_EQ(readSkeleton(dir.file("s.obj")).nodeCount(), 6u);
+    EXPECT_THROW(writeSkeleton(sampleSkeleton(), dir.file("missing/s.obj")), InvalidInput);
+    const auto entries = std::distance(std::filesystem::directory_iterator(dir.path()), {});
+    EXPECT_EQ(entries, 1);
+}
+
