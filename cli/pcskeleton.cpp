@@ -1,11 +1,13 @@
 // pcskeleton: point cloud in, curve skeleton out, from the command line. Built from
 // vcg_ext alone (no Qt, no X server) for pipelines, benchmarks and headless machines.
 #include <pcskeleton/curve_skeleton.h>
+#include <pcskeleton/io/input_file.h>
 #include <pcskeleton/io/point_cloud_io.h>
 #include <pcskeleton/io/skeleton_io.h>
 
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <iostream>
@@ -21,6 +23,7 @@ struct Options {
     std::string input, output, contracted, correspondence, report;
     SkeletonParameters parameters;
     bool quiet = false;
+    bool force = false;  // replace existing output files
 };
 
 class UsageError : public std::runtime_error {
@@ -135,8 +138,13 @@ void printHelp() {
         "  --paper               the paper's pipeline exactly: the same as --keep-outliers\n"
         "                        --no-recentre --no-refine --no-extend-tips\n"
         "  --report FILE         also write the quality report to FILE\n"
+        "  --force               replace output files that exist already (never the input)\n"
         "  --quiet               no progress and no summary on stderr\n"
         "  -h, --help            this text\n"
+        "\n"
+        "Files: the input is never modified. An output that exists already is refused\n"
+        "unless --force is given; an output naming the input is always refused. Each\n"
+        "output appears only once complete (written aside, then renamed).\n"
         "\n"
         "Exit status: 0 on success, 1 when the input cannot be processed (the reason is\n"
         "printed on one line), 2 on a command-line error.\n",
@@ -157,6 +165,40 @@ int parseInteger(const std::string& option, const std::string& text) {
     const long value = std::strtol(text.c_str(), &end, 10);
     if (text.empty() || *end != '\0') throw UsageError(option + " expects an integer, got '" + text + "'");
     return static_cast<int>(value);
+}
+
+bool samePath(const std::string& a, const std::string& b) {
+    std::error_code ignored;
+    return sameFile(a, b) || std::filesystem::weakly_canonical(a, ignored) == std::filesystem::weakly_canonical(b, ignored);
+}
+
+// Before any work: no output may be the input or another output, an existing output is
+// replaced only with --force, and each output's folder must exist.
+void checkOutputs(const Options& options) {
+    const std::vector<std::pair<std::string, std::string>> outputs = {{"-o", options.output},
+                                                                      {"--contracted", options.contracted},
+                                                                      {"--correspondence", options.correspondence},
+                                                                      {"--report", options.report}};
+    for (std::size_t i = 0; i < outputs.size(); ++i) {
+        const auto& [option, path] = outputs[i];
+        if (path.empty()) continue;
+        if (samePath(path, options.input)) {
+            throw UsageError(option + " '" + path + "' is the input file; choose another name (the input is never overwritten)");
+        }
+        for (std::size_t j = 0; j < i; ++j) {
+            if (!outputs[j].second.empty() && samePath(path, outputs[j].second)) {
+                throw UsageError(outputs[j].first + " and " + option + " name the same file '" + path + "'");
+            }
+        }
+        if (std::filesystem::is_directory(path)) throw UsageError(option + " '" + path + "' is a directory");
+        if (fileExists(path) && !options.force) {
+            throw UsageError(option + " '" + path + "' exists already; choose another name or add --force to replace it");
+        }
+        const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+        if (!folder.empty() && !std::filesystem::is_directory(folder)) {
+            throw UsageError(option + " '" + path + "': the folder '" + folder.string() + "' does not exist");
+        }
+    }
 }
 
 // Returns false when --help was given.
@@ -187,6 +229,8 @@ bool parseArguments(int argc, char** argv, Options& options) {
         if (arg == "-h" || arg == "--help") return false;
         if (arg == "--quiet") {
             options.quiet = true;
+        } else if (arg == "--force") {
+            options.force = true;
         } else if (arg == "--no-extend-tips") {
             options.parameters.thinning.extendTips = false;
         } else if (arg == "--refine" || arg == "--no-refine") {
@@ -211,14 +255,17 @@ bool parseArguments(int argc, char** argv, Options& options) {
     if (options.input.empty()) throw UsageError("no input file");
     if (options.output.empty()) throw UsageError("no output file (-o FILE)");
     if (!isSkeletonFileName(options.output)) throw UsageError("the output must end in .ply, .obj or .cg");
+    checkOutputs(options);
     return true;
 }
 
 void writeText(const std::string& path, const std::function<void(std::ostream&)>& write) {
-    std::ofstream out(path);
-    write(out);
-    out.close();
-    if (!out) throw InvalidInput("Cannot write '" + path + "'.");
+    writeFileAtomically(path, [&](const std::string& temporary) {
+        std::ofstream out(temporary);
+        write(out);
+        out.close();
+        if (!out) throw InvalidInput("Cannot write '" + temporary + "': writing failed (disk full?).");
+    });
 }
 
 void writeCorrespondence(const SkeletonGraph& skeleton, const std::string& path) {

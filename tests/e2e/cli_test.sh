@@ -63,7 +63,7 @@ set_aside=$(grep -c '^-1$' elephant_outliers.nodes || true)
 grep -q "; $set_aside outliers set aside (no node)" elephant_outliers.log \
   || { cat elephant_outliers.log; fail "the report does not count the $set_aside outliers"; }
 for option in --paper --keep-outliers; do
-  "$PCSKELETON" elephant_outliers.xyz -o elephant_kept.ply --correspondence elephant_kept.nodes $option --quiet
+  "$PCSKELETON" elephant_outliers.xyz -o elephant_kept.ply --correspondence elephant_kept.nodes $option --quiet --force
   ! grep -q '^-1$' elephant_kept.nodes || fail "$option left points without a node"
 done
 
@@ -108,7 +108,7 @@ fine=$($GRAPH show knot.ply | sed 's/.*nodes.: \([0-9]*\).*/\1/')
 "$PCSKELETON" --help >help.txt
 for option in --contracted --correspondence --k --wl --wh --sl --max-wl --max-wh --row-limit --iterations \
               --threshold --radius --no-extend-tips --refine --no-refine --no-recentre --keep-outliers --outlier-isolation \
-              --outlier-local --outlier-cluster --paper --report --quiet; do
+              --outlier-local --outlier-cluster --paper --report --force --quiet; do
   grep -q -- "$option" help.txt || fail "--help does not document $option"
 done
 grep -q "\[0.02\]" help.txt || fail "--help does not give the radius default"
@@ -119,7 +119,7 @@ expect_error() {  # exit code, text in the message, arguments...
   set +e; "$PCSKELETON" "$@" >out.txt 2>err.txt; local got=$?; set -e
   [ "$got" = "$code" ] || fail "pcskeleton $* exited $got, expected $code ($(cat err.txt))"
   [ "$(wc -l <err.txt)" = 1 ] || fail "pcskeleton $* printed $(wc -l <err.txt) lines on stderr"
-  grep -q "$text" err.txt || fail "pcskeleton $*: '$(cat err.txt)' does not mention '$text'"
+  grep -q -- "$text" err.txt || fail "pcskeleton $*: '$(cat err.txt)' does not mention '$text'"
 }
 printf '' >empty.xyz
 printf '0 0 0\n1 0 0\nnan 1 1\n' >nan.xyz
@@ -139,4 +139,42 @@ expect_error 1 "^pcskeleton: --sl must be at least 1" $M/knot.off -o out.ply --s
 for i in $(seq 0 11); do echo "$((i % 4)) $((i / 4)) $((i % 3))"; done >few.xyz
 expect_error 1 "at least 21 are needed.*Lower --k" few.xyz -o out.ply --k 20
 [ ! -e out.ply ] || fail "a failed run wrote out.ply"
+
+# The catalogue of malformed files (tests/data/bad_inputs): exit 1, the reason on one line
+# naming the line or byte offset, nothing written. vcglib's readers crashed on several.
+BAD="$HERE/../data/bad_inputs"
+expect_error 1 "byte offset 175): list 'extra' claims 255 items" "$BAD/ply_binary_list_length_garbage.ply" -o out.ply
+expect_error 1 "declares 4294967296 records.*truncated or the count is wrong" "$BAD/ply_vertex_count_2pow32.ply" -o out.ply
+expect_error 1 "declares 2147483648 records" "$BAD/ply_vertex_count_2pow31.ply" -o out.ply
+expect_error 1 "line 3: an element line reads 'element NAME COUNT'" "$BAD/ply_vertex_count_missing.ply" -o out.ply
+expect_error 1 "line 2: a vertex (v) needs three numbers" "$BAD/obj_vertex_garbage.obj" -o out.ply
+expect_error 1 "ends at vertex 1 of 99999999999999" "$BAD/off_huge_count.off" -o out.ply
+expect_error 1 "declares 100 records" "$BAD/ply_truncated_binary.ply" -o out.ply
+expect_error 1 "no property" "$BAD/ply_element_without_properties.ply" -o out.ply
+mkdir -p folder.ply
+expect_error 1 "'folder.ply': it is a directory" folder.ply -o out.ply
+# Faces are not needed for points: out-of-range indices are not an error, too few points are.
+expect_error 1 "Too few points: 4 distinct points" "$BAD/obj_face_index_out_of_range.obj" -o out.ply
+expect_error 1 "Too few points: 4 distinct points" "$BAD/ply_big_endian_double.ply" -o out.ply
+[ ! -e out.ply ] || fail "a refused file still gave out.ply"
+
+# Outputs never clobber: the input is refused as any output (even with --force), an
+# existing file needs --force, two outputs cannot share a name; all before any work.
+cp elephant_contracted.ply input.ply
+before=$(md5sum <input.ply)
+expect_error 2 "-o 'input.ply' is the input file" input.ply -o input.ply
+expect_error 2 "is the input file" input.ply -o ./input.ply --force
+expect_error 2 "--contracted 'input.ply' is the input file" input.ply -o fresh.ply --contracted input.ply
+expect_error 2 "--correspondence '$WORK/input.ply' is the input file" input.ply -o fresh.ply --correspondence "$WORK/input.ply"
+ln -f input.ply hardlink.ply
+expect_error 2 "is the input file" input.ply -o hardlink.ply --force
+expect_error 2 "-o and --report name the same file" input.ply -o fresh.ply --report fresh.ply
+[ "$(md5sum <input.ply)" = "$before" ] || fail "the input was modified"
+[ ! -e fresh.ply ] || fail "a refused command wrote fresh.ply"
+expect_error 2 "-o 'knot.ply' exists already; choose another name or add --force" $M/knot.off -o knot.ply
+expect_error 2 "the folder 'nowhere' does not exist" $M/knot.off -o nowhere/knot.ply
+cp knot.ply knot_before.ply
+"$PCSKELETON" $M/knot.off -o knot.ply --radius 0.05 --force --quiet
+! cmp -s knot.ply knot_before.ply || fail "--force did not replace knot.ply"
+ls | grep -q partial && fail "a temporary file was left behind: $(ls | grep partial)"
 echo "pcskeleton command line: OK"
