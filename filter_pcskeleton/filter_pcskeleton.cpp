@@ -6,6 +6,7 @@
 
 #include <pcskeleton/curve_skeleton.h>
 #include <pcskeleton/editing/skeleton_editing.h>
+#include <pcskeleton/io/input_file.h>
 #include <pcskeleton/io/skeleton_io.h>
 
 #include <vcg/complex/allocate.h>
@@ -200,9 +201,9 @@ float defaultRadiusOfSelection(const MeshModel* layer) {
     return nodes.empty() ? 0.0f : float(sum / nodes.size());
 }
 
-// "<folder of the points' file>/<layer label>.ply" (or _1, _2... if taken): next to the
-// data rather than in whatever directory MeshLab was started from.
-QString defaultSkeletonFileName(MeshDocument& md) {
+// "<folder of the points' file>/<layer label>.<extension>" (or _1, _2... if taken): next to
+// the data rather than in whatever directory MeshLab was started from.
+QString defaultSkeletonFileName(MeshDocument& md, const QString& extension = "ply") {
     MeshModel* layer = md.mm();
     QString name = layer ? QFileInfo(layer->label()).completeBaseName() : QString("skeleton");
     name.replace(' ', '_');
@@ -217,8 +218,10 @@ QString defaultSkeletonFileName(MeshDocument& md) {
     }
     // Never propose an existing file, above all the one the skeleton was opened from.
     const QDir directory(folder.isEmpty() ? QDir::homePath() : folder);
-    QString fileName = directory.filePath(name + ".ply");
-    for (int copy = 1; QFileInfo::exists(fileName); ++copy) fileName = directory.filePath(QString("%1_%2.ply").arg(name).arg(copy));
+    QString fileName = directory.filePath(name + "." + extension);
+    for (int copy = 1; QFileInfo::exists(fileName); ++copy) {
+        fileName = directory.filePath(QString("%1_%2.%3").arg(name).arg(copy).arg(extension));
+    }
     return fileName;
 }
 
@@ -365,7 +368,12 @@ void FilterPCSkeletonPlugin::initParameterSet(QAction* action, MeshDocument& md,
         case FP_EXPORT_SKELETON: {
             parameters.addParam(RichSaveFile("fileName", defaultSkeletonFileName(md),
                 "Skeleton (*.ply *.obj *.cg)", "File",
-                "Where to write the skeleton; .ply, .obj or .cg. An existing file is replaced."));
+                "Where to write the skeleton; .ply, .obj or .cg. Empty, or only an extension such as .obj (for "
+                "scripts): next to the points' file, named after the layer (e.g. elephant_skeleton.ply), never "
+                "an existing file. The file of an open layer is never written."));
+            parameters.addParam(RichBool("overwrite", false, "Replace an existing file",
+                "Write over a file that exists already (never over the file of an open layer). Off: an existing "
+                "file is refused and left as it is."));
             break;
         }
         case FP_SET_RADIUS_OF_SELECTED_NODES:
@@ -542,9 +550,24 @@ bool FilterPCSkeletonPlugin::exportSkeleton(MeshDocument& md, const RichParamete
         errorMessage = reason;
         return false;
     }
-    const QString fileName = parameters.getSaveFileName("fileName");
+    QString fileName = parameters.getSaveFileName("fileName");
+    if (fileName.isEmpty() || (fileName.startsWith('.') && !fileName.contains('/'))) {
+        fileName = defaultSkeletonFileName(md, fileName.isEmpty() ? QString("ply") : fileName.mid(1).toLower());
+    }
     if (!pcskeleton::isSkeletonFileName(fileName.toStdString())) {
         errorMessage = QString("Cannot write '%1': the file name must end in .ply, .obj or .cg.").arg(fileName);
+        return false;
+    }
+    for (const MeshModel* m : md.meshList) {
+        if (!m->fullName().isEmpty() && pcskeleton::sameFile(m->fullName().toStdString(), fileName.toStdString())) {
+            errorMessage = QString("Cannot write '%1': it is the file of the open layer '%2', which is never "
+                                   "overwritten. Choose another name.").arg(fileName, m->label());
+            return false;
+        }
+    }
+    if (QFileInfo::exists(fileName) && !parameters.getBool("overwrite")) {
+        errorMessage = QString("Cannot write '%1': the file exists already. Choose another name, or tick "
+                               "'Replace an existing file'.").arg(fileName);
         return false;
     }
     const pcskeleton::SkeletonGraph skeleton = readSkeletonLayer(layer);

@@ -24,18 +24,20 @@ SKELETON="$OUT/${NAME}_skeleton.ply"
 PICTURE="$OUT/${NAME}_skeleton.png"
 LOG="$OUT/${NAME}_meshlabserver.log"
 
-# The shipped script, with the contracted layer kept for the picture.
+# The shipped script, with the contracted layer kept for the picture and the skeleton
+# written into out/demo (the script alone writes it next to the input, never replacing a
+# file; the demo replaces its own previous results).
 SCRIPT="$OUT/${NAME}_pipeline.mlx"
-sed 's/name="addContractedLayer" value="false"/name="addContractedLayer" value="true"/' \
+sed -e 's/name="addContractedLayer" value="false"/name="addContractedLayer" value="true"/' \
+    -e "s|name=\"fileName\" value=\"\"|name=\"fileName\" value=\"$SKELETON\"|" \
+    -e 's/name="overwrite" value="false"/name="overwrite" value="true"/' \
   "$ROOT/filter_pcskeleton/scripts/compute_curve_skeleton.mlx" >"$SCRIPT"
 
 echo "Computing the curve skeleton of $INPUT with meshlabserver (build/meshlab) ..."
-# meshlabserver needs an X server with GLX even for CPU filters, hence xvfb-run. The
-# script's Export Skeleton writes skeleton.ply (with edges) into the working directory.
+# meshlabserver needs an X server with GLX even for CPU filters, hence xvfb-run.
 (cd "$OUT" && xvfb-run -a "$ROOT/build/meshlab/bin/meshlabserver" -i "$INPUT" \
   -o "$ORIGINAL" -l 0 -m sa -o "$CONTRACTED" -l 1 -m sa -o "$SEGMENTS" -l 2 -m vc sa \
   -s "$SCRIPT" >"$LOG" 2>&1) || { cat "$LOG" >&2; echo "meshlabserver failed (log: $LOG)" >&2; exit 1; }
-mv "$OUT/skeleton.ply" "$SKELETON"
 sed -n 's/^LOG: [0-9]* /  /p' "$LOG"  # the filters' log lines
 
 /usr/bin/python3 "$ROOT/scripts/render_points.py" "$PICTURE" \

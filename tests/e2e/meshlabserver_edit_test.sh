@@ -16,10 +16,12 @@ xvfb-run -a "$MESHLABSERVER" -i ring.ply -s "$SCRIPTS/repair_skeleton_example.ml
 # Cut (12 -> 11 nodes, 2 tips), closed again (1 cycle), three top nodes merged (9 nodes).
 grep -q "delete 1 node; now 11 nodes, 10 edges, 1 component, 0 cycles, 2 tips" run.log \
   || { cat run.log; echo "FAIL: the log does not show the cut"; exit 1; }
-$GRAPH check repaired.ply --cycles 1 --tips 0 --components 1 --min-nodes 9
+# Written next to the input under the next free name: ring.ply itself is never replaced.
+$GRAPH check ring.ply --cycles 1 --tips 0 --min-nodes 12
+$GRAPH check ring_1.ply --cycles 1 --tips 0 --components 1 --min-nodes 9
 /usr/bin/python3 - <<'PY'
 import math
-lines = open("repaired.ply").read().splitlines()
+lines = open("ring_1.ply").read().splitlines()
 start = lines.index("end_header") + 1
 count = next(int(l.split()[2]) for l in lines if l.startswith("element vertex"))
 nodes = [[float(x) for x in l.split()] for l in lines[start:start + count]]
@@ -36,8 +38,9 @@ PY
 
 # Connecting needs exactly two selected nodes: with three the script stops, no file written.
 sed -e 's/(x &gt; 0.8)/(x \&gt; 0.4)/' "$SCRIPTS/repair_skeleton_example.mlx" > refused.mlx
-mkdir -p refused && (cd refused && xvfb-run -a "$MESHLABSERVER" -i ../ring.ply -s ../refused.mlx >run.log 2>&1 || true)
+mkdir -p refused && cp ring.ply refused/
+(cd refused && xvfb-run -a "$MESHLABSERVER" -i ring.ply -s ../refused.mlx >run.log 2>&1 || true)
 grep -q "select exactly two nodes (4 selected)" refused/run.log \
   || { cat refused/run.log; echo "FAIL: the refusal does not explain itself"; exit 1; }
-[ ! -e refused/repaired.ply ] || { echo "FAIL: a refused script still wrote its result"; exit 1; }
+[ "$(ls refused)" = "$(printf 'ring.ply\nrun.log')" ] || { echo "FAIL: a refused script still wrote its result"; exit 1; }
 echo "meshlabserver skeleton editing: OK"

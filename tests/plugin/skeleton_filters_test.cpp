@@ -190,6 +190,52 @@ TEST_F(SkeletonFilterTest, ExportNeverProposesAnExistingFile) {
     std::system(("rm -rf '" + dir + "'").c_str());
 }
 
+TEST_F(SkeletonFilterTest, ExportNeverWritesOverAnOpenLayerOrAnExistingFileUnlessTold) {
+    const std::string dir = temporaryDirectory();
+    const QString opened = QString::fromStdString(dir + "/ring.ply");
+    QFile file(opened);
+    file.open(QIODevice::WriteOnly);
+    file.write("the user's file");
+    file.close();
+    MeshModel* skeleton = document.addNewMesh(opened, "ring.ply", true);
+    vcg::tri::Allocator<CMeshO>::AddVertices(skeleton->cm, 2);
+    vcg::tri::Allocator<CMeshO>::AddEdge(skeleton->cm, 0, 1);
+    QAction* exporter = action(kExportFilter);
+    const auto fileText = [](const QString& path) {
+        QFile f(path);
+        f.open(QIODevice::ReadOnly);
+        return f.readAll();
+    };
+
+    // The open layer's own file: refused, even when replacing is allowed.
+    RichParameterList parameters = defaults(exporter);
+    parameters.setValue("fileName", FileValue(opened));
+    parameters.setValue("overwrite", BoolValue(true));
+    EXPECT_FALSE(apply(exporter, parameters));
+    EXPECT_TRUE(plugin->errorMsg().contains("file of the open layer 'ring.ply'")) << plugin->errorMsg().toStdString();
+    EXPECT_EQ(fileText(opened), QByteArray("the user's file"));
+
+    // Another existing file: refused unless 'Replace an existing file' is ticked.
+    const QString other = QString::fromStdString(dir + "/other.obj");
+    QFile(other).open(QIODevice::WriteOnly);
+    parameters.setValue("fileName", FileValue(other));
+    parameters.setValue("overwrite", BoolValue(false));
+    EXPECT_FALSE(apply(exporter, parameters));
+    EXPECT_TRUE(plugin->errorMsg().contains("exists already")) << plugin->errorMsg().toStdString();
+    EXPECT_TRUE(fileText(other).isEmpty());
+    parameters.setValue("overwrite", BoolValue(true));
+    EXPECT_TRUE(apply(exporter, parameters)) << plugin->errorMsg().toStdString();
+    EXPECT_EQ(pcskeleton::readSkeleton(other.toStdString()).nodeCount(), 2u);
+
+    // An empty name (what the shipped scripts use): next to the data, a name not taken.
+    parameters = defaults(exporter);
+    parameters.setValue("fileName", FileValue(""));
+    EXPECT_TRUE(apply(exporter, parameters)) << plugin->errorMsg().toStdString();
+    EXPECT_EQ(pcskeleton::readSkeleton(dir + "/ring_1.ply").nodeCount(), 2u);
+    EXPECT_EQ(fileText(opened), QByteArray("the user's file"));
+    std::system(("rm -rf '" + dir + "'").c_str());
+}
+
 namespace {
 
 // The log lines a filter wrote, each with its level.
