@@ -203,6 +203,16 @@ TEST(Reconstruction, BadInputIsRefusedWithTheReason) {
     expectRefusal(scan, ringSkeleton(), "surface weight must be positive", noSurface);
 }
 
+// Five points, or a thousand copies of one, with a valid skeleton: no surface to place.
+TEST(Reconstruction, TooFewDistinctPointsAreRefusedWithTheCountAndTheMinimum) {
+    const PointList scan = torusScanWithGap();
+    expectRefusal(PointList(scan.begin(), scan.begin() + 5), ringSkeleton(),
+                  "has 5 distinct points at the grid's resolution (5 points in all); the surface needs at least 32",
+                  atResolution(32));
+    expectRefusal(PointList(1000, scan[0]), ringSkeleton(), "has 1 distinct point at the grid's resolution (1000",
+                  atResolution(32));
+}
+
 TEST(Reconstruction, ReportsProgressUpToCompletion) {
     std::vector<int> percents;
     reconstructFromSkeleton(torusScanWithGap(), ringSkeleton(), atResolution(32),

@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -20,6 +21,9 @@ constexpr int kPaperResolution = 64;          // the paper's grid: 2^6 cells on 
 constexpr int kDistanceResolution = 64;       // distances to the skeleton are computed exactly up to here
 constexpr double kSkeletonSampleSpacing = 0.25;      // along bones: four samples per paper cell
 constexpr double kMarginShare = 0.05;          // empty space around the data, share of the longest side
+// Fewer grid cells holding a point than this and the points do not place a surface: the
+// field would be the skeleton's tubes alone, however "successful" the solve.
+constexpr std::size_t kMinimumOccupiedCells = 32;
 
 // The frame of the paper's grid: positions scaled so that the grid's longest side is 64,
 // i.e. lengths are counted in the cells of the paper's 2^6 grid, whatever our resolution.
@@ -49,6 +53,31 @@ void checkInputs(const PointList& points, const SkeletonGraph& skeleton) {
                            {Remedy::take(Step::SetNodeRadii)});
     const std::string violation = invariantViolation(skeleton);
     if (!violation.empty()) throw InvalidInput("The skeleton is not valid: " + violation);
+}
+
+// The number of grid cells holding at least one point: the distinct points as the grid sees them.
+std::size_t occupiedCells(const PointList& framePoints, const FieldGrid& grid) {
+    std::vector<long long> cells;
+    cells.reserve(framePoints.size());
+    for (const Point& p : framePoints) {
+        long long cell = 0;
+        for (int axis = 0; axis < 3; ++axis) {
+            const long long i = std::llround((p[axis] - grid.origin[axis]) / grid.spacing);
+            cell = cell * (grid.nodes[axis] + 1) + std::clamp<long long>(i, 0, grid.nodes[axis]);
+        }
+        cells.push_back(cell);
+    }
+    std::sort(cells.begin(), cells.end());
+    return std::size_t(std::unique(cells.begin(), cells.end()) - cells.begin());
+}
+
+void refuseTooFewDistinctPoints(const PointList& framePoints, const FieldGrid& grid) {
+    const std::size_t cells = occupiedCells(framePoints, grid);
+    if (cells >= kMinimumOccupiedCells) return;
+    throw InvalidInput("The point layer has " + std::to_string(cells) + " distinct point" + (cells == 1 ? "" : "s") +
+                       " at the grid's resolution (" + std::to_string(framePoints.size()) +
+                       " points in all); the surface needs at least " + std::to_string(kMinimumOccupiedCells) +
+                       " to be placed. Use the scan the skeleton was computed from as the points.");
 }
 
 // The box holding the points and every node's ball, with a margin, as a grid whose cell
@@ -210,6 +239,7 @@ Reconstruction reconstructFromSkeleton(const PointList& points, const SkeletonGr
     PointList framePoints;
     framePoints.reserve(points.size());
     for (const Point& p : points) framePoints.push_back(frame.toFrame(p));
+    refuseTooFewDistinctPoints(framePoints, grid);
     const SkeletonGraph frameSkeleton = skeletonInFrame(skeleton, frame);
     const SkeletonDistance distance(frameSkeleton);
 
