@@ -459,7 +459,7 @@ void FilterPCSkeletonPlugin::logContractionStart(const MeshModel& source,
 bool FilterPCSkeletonPlugin::contractPointCloud(MeshDocument& md, const RichParameterList& parameters,
                                                 vcg::CallBackPos* cb) {
     MeshModel& source = *md.mm();
-    const LayerPoints input = collectPoints(source.cm);
+    const LayerPoints input = collectPoints(source);
     const pcskeleton::ContractionParameters settings = readContractionParameters(parameters);
     const int iterationsToRun = parameters.getInt("iterationsToRun");
     const bool keepEveryIteration = parameters.getBool("keepEveryIteration");
@@ -508,7 +508,7 @@ void FilterPCSkeletonPlugin::addSkeletonLayers(MeshDocument& md, const MeshModel
 bool FilterPCSkeletonPlugin::computeSkeleton(MeshDocument& md, const RichParameterList& parameters,
                                              vcg::CallBackPos* cb) {
     MeshModel& source = *md.mm();
-    const LayerPoints input = collectPoints(source.cm);
+    const LayerPoints input = collectPoints(source);
     pcskeleton::SkeletonParameters pipeline{readContractionParameters(parameters), readThinningParameters(parameters)};
     if (parameters.getBool("paperPipeline")) pipeline.keepToThePaper();
     const pcskeleton::ContractionParameters& settings = pipeline.contraction;

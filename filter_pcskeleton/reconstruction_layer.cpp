@@ -48,7 +48,7 @@ ReconstructedLayer addReconstructionLayer(MeshDocument& md, const MeshModel& poi
                                                   "to reconstruct as the point layer.").arg(points.label())));
 
     const Reconstruction result =
-        reconstructFromSkeleton(collectPoints(points.cm).points, readSkeletonLayer(skeleton), parameters, progress);
+        reconstructFromSkeleton(collectPoints(points).points, readSkeletonLayer(skeleton), parameters, progress);
 
     MeshModel* layer = md.addNewMesh("", derivedLabel(points, "reconstruction"), makeCurrent);
     CMeshO& m = layer->cm;

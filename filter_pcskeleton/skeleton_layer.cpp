@@ -1,5 +1,9 @@
 #include "skeleton_layer.h"
 
+#include <pcskeleton/core/point_cloud_input.h>
+
+#include <limits>
+
 #include <vcg/complex/allocate.h>
 
 #include <QFileInfo>
@@ -33,7 +37,34 @@ MeshModel* addPointCopy(MeshDocument& md, const MeshModel& source, const LayerPo
 
 }  // namespace
 
-LayerPoints collectPoints(const CMeshO& mesh) {
+namespace {
+
+// MeshLab keeps coordinates in single precision: 1e7 from the origin, neighbouring values
+// are about 1.2 apart, so a scan 10 across in georeferenced coordinates is merged onto a
+// few positions when it is loaded, and translating it in MeshLab cannot bring the lost
+// digits back. Refused when fewer than this many representable steps span the layer.
+constexpr double kMinimumStepsAcrossLayer = 1000;
+
+void refuseCollapsedCoordinates(const MeshModel& layer, const PointList& points) {
+    if (points.empty()) return;
+    const Eigen::AlignedBox3d box = pcskeleton::boundingBox(points);
+    const double farthest = std::max(box.min().cwiseAbs().maxCoeff(), box.max().cwiseAbs().maxCoeff());
+    const double step = farthest * std::numeric_limits<float>::epsilon();
+    const double size = box.sizes().maxCoeff();
+    if (step == 0 || size >= kMinimumStepsAcrossLayer * step) return;
+    throw InvalidInput(QString("Layer '%1' lies %2 from the origin but is only %3 across. MeshLab stores coordinates "
+                               "in single precision: that far out, neighbouring values are %4 apart, so its points "
+                               "were merged onto a coarse grid when the file was loaded. Move the data near the "
+                               "origin before opening it in MeshLab (subtract its centre where it is produced), or "
+                               "run the pcskeleton command-line tool, which reads files in double precision.")
+                           .arg(layer.label()).arg(farthest, 0, 'g', 3).arg(size, 0, 'g', 3).arg(step, 0, 'g', 2)
+                           .toStdString());
+}
+
+}  // namespace
+
+LayerPoints collectPoints(const MeshModel& layer) {
+    const CMeshO& mesh = layer.cm;
     LayerPoints input;
     input.points.reserve(mesh.vn);
     input.vertexIndex.reserve(mesh.vn);
@@ -43,6 +74,7 @@ LayerPoints collectPoints(const CMeshO& mesh) {
         input.points.emplace_back(v.cP()[0], v.cP()[1], v.cP()[2]);
         input.vertexIndex.push_back(int(i));
     }
+    refuseCollapsedCoordinates(layer, input.points);
     return input;
 }
 
@@ -58,7 +90,7 @@ PointList readContractedLayer(const MeshModel& contracted, const MeshModel* sour
         throw InvalidInput("Choose as original points the layer that was contracted, not the contracted layer itself.");
     }
     const MeshModel& source = *sourceLayer;
-    input = collectPoints(source.cm);
+    input = collectPoints(source);
     std::vector<int> pointOfVertex(source.cm.vert.size(), -1);
     for (std::size_t i = 0; i < input.vertexIndex.size(); ++i) pointOfVertex[input.vertexIndex[i]] = int(i);
     PointList positions(input.points.size());

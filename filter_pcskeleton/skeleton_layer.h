@@ -22,11 +22,13 @@ extern const char* const kCorrespondenceAttribute;  // per mesh, std::vector<int
 extern const char* const kSourceLayerAttribute;     // per mesh, int: MeshModel id
 
 // The live vertices of a layer as points; faces are ignored (polygon soups work).
+// Throws InvalidInput when the layer lies so far from the origin for its size that
+// MeshLab's single-precision coordinates have merged its points (see the .cpp).
 struct LayerPoints {
     PointList points;
     std::vector<int> vertexIndex;  // slot in mesh.vert of each point
 };
-LayerPoints collectPoints(const CMeshO& mesh);
+LayerPoints collectPoints(const MeshModel& layer);
 
 // "<source base name> <what>". MeshLab's layer list cuts labels at the first dot, hence
 // the base name ("bunny.ply contracted" would show as "bunny").

@@ -352,3 +352,23 @@ TEST_F(SkeletonFilterTest, OutliersGetNoNodeUnlessThePapersPipelineIsAsked) {
     EXPECT_TRUE(capture.text(GLLogStream::FILTER).contains("0 outliers set aside"));
     EXPECT_TRUE(capture.text(GLLogStream::FILTER).contains("Tip extension: off"));
 }
+
+// A scan in georeferenced coordinates: 1e7 from the origin, 2 across. MeshLab's floats
+// merge its points; the filters say so and what to do instead of "too few points".
+TEST_F(SkeletonFilterTest, ALayerFarFromTheOriginIsRefusedWithTheReason) {
+    pcskeleton::PointList torus = pcskeleton::shapes::torus(2000, 1.0, 0.3);
+    for (pcskeleton::Point& p : torus) p += pcskeleton::Point(1e7, 2e6, 0);
+    addPointLayer(torus, "far");
+    for (const char* filter : {kContractFilter, kSkeletonFilter}) {
+        QAction* a = action(filter);
+        EXPECT_FALSE(apply(a, defaults(a))) << filter;
+        EXPECT_TRUE(plugin->errorMsg().contains("lies 1e+07 from the origin but is only"))
+            << plugin->errorMsg().toStdString();
+        EXPECT_TRUE(plugin->errorMsg().contains("single precision: that far out, neighbouring values are 1.2 apart")) << plugin->errorMsg().toStdString();
+    }
+    // 1e3 from the origin is no problem.
+    for (pcskeleton::Point& p : torus) p -= pcskeleton::Point(1e7 - 1e3, 2e6, 0);
+    addPointLayer(torus, "near");
+    QAction* skeleton = action(kSkeletonFilter);
+    EXPECT_TRUE(apply(skeleton, defaults(skeleton))) << plugin->errorMsg().toStdString();
+}
