@@ -51,7 +51,7 @@ void refuseCollapsedCoordinates(const MeshModel& layer, const PointList& points)
     const double farthest = std::max(box.min().cwiseAbs().maxCoeff(), box.max().cwiseAbs().maxCoeff());
     const double step = farthest * std::numeric_limits<float>::epsilon();
     const double size = box.sizes().maxCoeff();
-    if (step == 0 || size >= kMinimumStepsAcrossLayer * step) return;
+    if (step == 0 || size == 0 || size >= kMinimumStepsAcrossLayer * step) return;  // one point: the library says
     throw InvalidInput(QString("Layer '%1' lies %2 from the origin but is only %3 across. MeshLab stores coordinates "
                                "in single precision: that far out, neighbouring values are %4 apart, so its points "
                                "were merged onto a coarse grid when the file was loaded. Move the data near the "

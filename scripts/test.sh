@@ -1,8 +1,21 @@
 #!/usr/bin/env bash
 # The whole test suite: installs what is missing, builds, runs every test with CTest
-# (unit tests, the plugin loaded from its .so, meshlabserver and the GUI under Xvfb).
+# (unit tests, the plugin loaded from its .so, meshlabserver and the GUI under Xvfb), then
+# builds the library, the CLI and the unit tests with AddressSanitizer and
+# UndefinedBehaviorSanitizer (leaks included) in build-sanitize/ and runs them again there:
+# any sanitizer report fails the test that triggered it. CTest arguments ("-R io", ...)
+# apply to both runs; PCSKELETON_SANITIZE=0 skips the second.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bash "$ROOT/scripts/build.sh"
-cd "$ROOT/build"
-ctest --output-on-failure -j1 "$@"
+(cd "$ROOT/build" && ctest --output-on-failure -j1 "$@")
+
+if [ "${PCSKELETON_SANITIZE:-1}" != 0 ]; then
+  echo "== The same tests under AddressSanitizer + UndefinedBehaviorSanitizer (build-sanitize/)"
+  cmake -S "$ROOT" -B "$ROOT/build-sanitize" -DCMAKE_BUILD_TYPE=Release -DPCSKELETON_SANITIZE=ON \
+    -DPCSKELETON_BUILD_PLUGINS=OFF -DPCSKELETON_BUILD_BENCH=OFF >/dev/null
+  cmake --build "$ROOT/build-sanitize" -j"$(nproc)"
+  export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1"
+  export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+  (cd "$ROOT/build-sanitize" && ctest --output-on-failure -j1 "$@")
+fi
