@@ -26,7 +26,9 @@ std::vector<int> visibleIndices(const PointList& dense, const Point& direction, 
     auto pixelOf = [&](const Point& p) {
         const auto column = static_cast<long long>(std::floor(p.dot(across) / pixel));
         const auto row = static_cast<long long>(std::floor(p.dot(up) / pixel));
-        return (column << 32) ^ (row & 0xffffffffLL);
+        // Shifted as unsigned: shifting a negative value left is undefined behaviour.
+        return static_cast<long long>((static_cast<unsigned long long>(column) << 32) ^
+                                      (static_cast<unsigned long long>(row) & 0xffffffffULL));
     };
     std::unordered_map<long long, double> nearest;
     for (const Point& p : dense) {

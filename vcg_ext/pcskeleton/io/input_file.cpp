@@ -78,6 +78,12 @@ bool InputFile::readLine(std::string& line) {
     return true;
 }
 
+std::size_t InputFile::reservable(std::uint64_t declared, std::uint64_t minimumBytes) const {
+    const bool sizeKnown = size_ != std::numeric_limits<std::uint64_t>::max();
+    const std::uint64_t fits = sizeKnown ? remaining() / std::max<std::uint64_t>(minimumBytes, 1) : 1u << 20;
+    return std::size_t(std::min(declared, fits));
+}
+
 bool InputFile::readBytes(void* out, std::size_t n) {
     while (end_ - begin_ < n) {
         if (!fill()) return false;

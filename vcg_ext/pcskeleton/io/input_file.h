@@ -32,6 +32,10 @@ public:
     // The next line without its '\n' or "\r\n"; false at the end of the file. A line longer
     // than kMaxLineLength is refused rather than held in memory whole.
     bool readLine(std::string& line);
+    // How many of `declared` records to reserve memory for: never more than the bytes left
+    // could hold at minimumBytes each, nor more than a million when the size is unknown
+    // (a pipe), whatever a header claims.
+    std::size_t reservable(std::uint64_t declared, std::uint64_t minimumBytes) const;
     // Exactly n bytes, or false (and nothing consumed that matters) when fewer are left.
     bool readBytes(void* out, std::size_t n);
 

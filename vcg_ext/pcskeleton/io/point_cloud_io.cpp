@@ -13,11 +13,6 @@ namespace pcskeleton {
 
 namespace {
 
-// Never reserve more than the file could hold, whatever a header claims.
-void reserveFor(PointList& points, std::uint64_t declared, const InputFile& file, std::uint64_t minimumBytes) {
-    points.reserve(std::size_t(std::min(declared, file.remaining() / std::max<std::uint64_t>(minimumBytes, 1))));
-}
-
 PointList readPlyPoints(InputFile& file) {
     PointList points;
     bool sawVertices = false;
@@ -27,7 +22,7 @@ PointList readPlyPoints(InputFile& file) {
             file.fail("the vertex element has no x, y and z properties.");
         }
         sawVertices = true;
-        points.reserve(std::size_t(element.count));  // checked against the file's size already
+        points.reserve(file.reservable(element.count, 3));
     };
     vertices.record = [&](const double* xyz) { points.emplace_back(xyz[0], xyz[1], xyz[2]); };
     readPly(file, {vertices});
@@ -85,7 +80,7 @@ PointList readOffVertices(InputFile& file) {
     }
     const std::uint64_t vertices = std::uint64_t(count);
     PointList points;
-    reserveFor(points, vertices, file, 6);  // "0 0 0\n"
+    points.reserve(file.reservable(vertices, 6));  // "0 0 0\n"
     for (std::uint64_t i = 0; i < vertices; ++i) {
         if (!nextLine()) {
             file.fail("the file ends at vertex " + std::to_string(i) + " of " + std::to_string(vertices) + ".");

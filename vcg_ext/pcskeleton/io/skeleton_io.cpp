@@ -72,8 +72,8 @@ SkeletonGraph readSkeletonPly(InputFile& file) {
             file.fail("the vertex element has no x, y and z properties.");
         }
         sawVertices = true;
-        skeleton.nodes.reserve(std::size_t(element.count));
-        skeleton.radii.reserve(std::size_t(element.count));
+        skeleton.nodes.reserve(file.reservable(element.count, 3));
+        skeleton.radii.reserve(file.reservable(element.count, 3));
     };
     vertices.record = [&](const double* v) {
         skeleton.nodes.emplace_back(v[0], v[1], v[2]);
@@ -86,7 +86,7 @@ SkeletonGraph readSkeletonPly(InputFile& file) {
         if (!element.has("vertex1") || !element.has("vertex2")) {
             file.fail("the edge element has no vertex1 and vertex2 properties.");
         }
-        skeleton.edges.reserve(std::size_t(element.count));
+        skeleton.edges.reserve(file.reservable(element.count, 2));
     };
     edges.record = [&](const double* ends) {
         const double n = double(skeleton.nodes.size());
