@@ -94,8 +94,8 @@ PY
 click 120 10; click 160 386; click 640 536 1.5
 wait_window "Export Skeleton" 10
 shot export-dialog
-click 216 264 2        # Apply
-click 76 264           # Close
+click 216 293 2        # Apply
+click 76 293           # Close
 SAVED="$WORK/ring_1.ply"  # the default never replaces the file the skeleton came from
 [ -s "$SAVED" ] || fail "the edited skeleton was not saved to $SAVED"
 cmp -s "$SAVED" ring.ply && fail "the saved skeleton is the original"

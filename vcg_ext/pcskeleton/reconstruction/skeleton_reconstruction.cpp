@@ -239,7 +239,6 @@ Reconstruction reconstructFromSkeleton(const PointList& points, const SkeletonGr
     PointList framePoints;
     framePoints.reserve(points.size());
     for (const Point& p : points) framePoints.push_back(frame.toFrame(p));
-    refuseTooFewDistinctPoints(framePoints, grid);
     const SkeletonGraph frameSkeleton = skeletonInFrame(skeleton, frame);
     const SkeletonDistance distance(frameSkeleton);
 
@@ -251,6 +250,7 @@ Reconstruction reconstructFromSkeleton(const PointList& points, const SkeletonGr
         throw InvalidInput(farText.str() + ": the skeleton does not describe this point layer.",
                            {Remedy::take(Step::ComputeSkeleton), Remedy::take(Step::SetNodeRadii),
                             Remedy::raise(Parameter::OutsideDistance)});
+    refuseTooFewDistinctPoints(framePoints, grid);
     if (farShare > 0.05)
         summary.warnings.push_back({ReconstructionWarning::Kind::PointsFarFromSkeleton,
                                     {farText.str() + ": the surface there only follows the points",
