@@ -46,6 +46,16 @@ void addOutlierParameter(RichParameterList& list) {
         "point, as the paper does."));
 }
 
+void addDenoisingParameter(RichParameterList& list) {
+    list.addParam(RichInt("denoisePasses", pcskeleton::ContractionParameters().denoisingPasses,
+        parameterLabel(Parameter::DenoisingPasses),
+        "The 1-rings and the contraction use a copy of the points denoised by this many passes of projection "
+        "onto the plane of each point's k nearest neighbours; the nodes and radii still come from the points as "
+        "they are. Noise and misaligned scans then leave far fewer spurs and false loops. -1 = automatic: one "
+        "pass if the cloud is noisy (surface noise above 0.1, given in the log), none if it is clean; 0 = never, "
+        "as the paper; 2 to 10 for very noisy scans."));
+}
+
 void addContractionParameters(RichParameterList& list) {
     const pcskeleton::ContractionParameters d;
     list.addParam(RichInt("k", d.neighbourCount, parameterLabel(Parameter::NeighbourCount), kNeighbourHelp));
@@ -79,6 +89,7 @@ void addContractionParameters(RichParameterList& list) {
         "Contraction stops when the total 1-ring size shrank by less than this fraction of its initial value "
         "in the last iteration."));
     addOutlierParameter(list);
+    addDenoisingParameter(list);
 }
 
 pcskeleton::ContractionParameters readContractionParameters(const RichParameterList& list) {
@@ -93,6 +104,7 @@ pcskeleton::ContractionParameters readContractionParameters(const RichParameterL
     p.maxIterations = list.getInt("maxIterations");
     p.terminationThreshold = list.getFloat("terminationThreshold");
     p.outliers.detect = list.getBool("detectOutliers");
+    p.denoisingPasses = list.getInt("denoisePasses");
     return p;
 }
 
@@ -126,6 +138,7 @@ pcskeleton::ContractionParameters contractionOfThinning(const RichParameterList&
     pcskeleton::ContractionParameters p;
     p.neighbourCount = list.getInt("k");
     p.outliers.detect = list.getBool("detectOutliers");
+    p.denoisingPasses = list.getInt("denoisePasses");
     return p;
 }
 
@@ -363,6 +376,7 @@ void FilterPCSkeletonPlugin::initParameterSet(QAction* action, MeshDocument& md,
             parameters.addParam(RichInt("k", 0, parameterLabel(Parameter::NeighbourCount),
                 QString(kNeighbourHelp) + " Use the value the contraction used."));
             addOutlierParameter(parameters);
+            addDenoisingParameter(parameters);
             addThinningParameters(parameters);
             break;
         case FP_EXPORT_SKELETON: {

@@ -24,6 +24,7 @@ QString parameterLabel(Parameter parameter) {
         case Parameter::OutlierDetection: return "Detect outliers";
         case Parameter::OutlierIsolation: return "Outlier isolation (spacings)";
         case Parameter::OutlierClusterShare: return "Outlier cluster share";
+        case Parameter::DenoisingPasses: return "Denoising passes";
     }
     return {};
 }

@@ -1,5 +1,7 @@
 #include "pcskeleton/curve_skeleton.h"
 
+#include "pcskeleton/contraction/point_denoising.h"
+
 #include "pcskeleton/analysis/node_recentering.h"
 #include "pcskeleton/analysis/skeleton_refinement.h"
 #include "pcskeleton/internal/stopwatch.h"
@@ -62,6 +64,8 @@ void thinAndEmbed(const NormalizedCloud& cloud, const OneRings& rings, const Poi
     result.quality.stopReason = c.stopReason;
     result.quality.iterations = int(c.iterations.size());
     result.quality.extentRatio = c.iterations.empty() ? 1.0 : c.iterations.back().extentRatio;
+    result.quality.denoisingPasses = c.denoisingPasses;
+    result.quality.surfaceNoise = c.surfaceNoise;
     result.seconds.finishing = stage.seconds();
 }
 
@@ -109,7 +113,12 @@ SkeletonResult skeletonFromContractedPoints(const PointList& input, const PointL
     const NormalizedCloud cloud = normalizeCloud(input, std::size_t(neighbours) + 1, contraction.outliers);
     SkeletonResult result;
     Stopwatch stage;
-    const OneRings rings = OneRings::compute(cloud.points, neighbours, progressRange(progress, 0, 50));
+    // The same 1-rings as the contraction's: those of the same denoised copy.
+    const DenoisingChoice denoising = chooseDenoising(cloud.points, neighbours, contraction.denoisingPasses);
+    const OneRings rings = OneRings::compute(denoisedCopy(cloud.points, neighbours, denoising.passes), neighbours,
+                                             progressRange(progress, 0, 50));
+    result.contraction.denoisingPasses = denoising.passes;
+    result.contraction.surfaceNoise = denoising.surfaceNoise;
     result.seconds.neighbourhoods = stage.seconds();
 
     rejectNonFinite(contracted, "contracted points", Remedy::take(Step::ContractAgain));

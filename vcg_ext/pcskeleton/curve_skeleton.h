@@ -41,6 +41,7 @@ struct SkeletonParameters {
     // refinement, tip extension), keeping every other setting.
     void keepToThePaper() {
         contraction.outliers.detect = false;
+        contraction.denoisingPasses = 0;
         thinning.recentre = false;
         thinning.refine = false;
         thinning.extendTips = false;

@@ -184,6 +184,14 @@ std::string describeFindings(const SkeletonQuality& q) {
         s << "Contraction: " << counted(std::size_t(q.iterations), "iteration", "iterations") << ", "
           << describe(q.stopReason) << "; mean 1-ring size " << percent(q.extentRatio) << " of the initial.\n";
     }
+    s << "Denoising: ";
+    if (q.denoisingPasses == 0) s << "none";
+    else s << counted(std::size_t(q.denoisingPasses), "pass", "passes") << " on the contracted copy";
+    if (q.surfaceNoise >= 0) {
+        s << " (automatic: surface noise " << std::setprecision(2) << q.surfaceNoise
+          << (q.denoisingPasses > 0 ? ", a noisy cloud)" : ", a clean cloud)");
+    }
+    s << ".\n";
     s << "Input: " << counted(q.points, "point", "points") << " in " << counted(std::size_t(q.inputParts), "part", "parts")
       << "; " << counted(q.outliers, "outlier", "outliers") << " set aside (no node); " << q.uncontractedPoints
       << " did not contract.\n";

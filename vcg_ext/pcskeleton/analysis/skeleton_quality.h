@@ -49,6 +49,8 @@ struct SkeletonQuality {
     StopReason stopReason = StopReason::NotStopped;
     int iterations = 0;
     double extentRatio = 1.0;  // mean 1-ring size at the end, relative to the start
+    int denoisingPasses = 0;   // of the copy whose 1-rings were contracted (point_denoising.h)
+    double surfaceNoise = -1;  // measured for the automatic choice, else -1
 
     std::size_t points = 0;
     std::size_t outliers = 0;       // set aside before the 1-rings: no node

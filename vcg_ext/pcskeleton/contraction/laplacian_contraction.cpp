@@ -1,4 +1,6 @@
 #include "pcskeleton/contraction/laplacian_contraction.h"
+#include "pcskeleton/contraction/point_denoising.h"
+
 
 #include "pcskeleton/internal/stopwatch.h"
 
@@ -61,10 +63,11 @@ LaplacianContraction::LaplacianContraction(const PointList& input, const Contrac
     cloud_ = normalizeCloud(input, static_cast<std::size_t>(k) + 1, parameters_.outliers);
 
     const Stopwatch stopwatch;
-    rings_ = OneRings::compute(cloud_.points, k, progress);
+    denoising_ = chooseDenoising(cloud_.points, k, parameters_.denoisingPasses);
+    positions_ = denoisedCopy(cloud_.points, k, denoising_.passes);
+    rings_ = OneRings::compute(positions_, k, progress);
     neighbourhoodSeconds_ = stopwatch.seconds();
 
-    positions_ = cloud_.points;
     laplacian_ = std::make_unique<CotangentLaplacian>(rings_, parameters_.laplacianRowLimit);
     initialExtents_ = ringExtents(rings_, positions_);
     initialExtentSum_ = std::accumulate(initialExtents_.begin(), initialExtents_.end(), 0.0);
@@ -173,6 +176,8 @@ ContractionResult LaplacianContraction::result() const {
     result.neighbourCount = neighbourCount();
     result.initialContractionWeight = initialContractionWeight_;
     result.neighbourhoodSeconds = neighbourhoodSeconds_;
+    result.denoisingPasses = denoising_.passes;
+    result.surfaceNoise = denoising_.surfaceNoise;
     return result;
 }
 

@@ -16,6 +16,7 @@
 
 #include "pcskeleton/contraction/cotangent_laplacian.h"
 #include "pcskeleton/contraction/one_ring.h"
+#include "pcskeleton/contraction/point_denoising.h"
 #include "pcskeleton/core/point_cloud_input.h"
 #include "pcskeleton/core/progress.h"
 #include "pcskeleton/internal/sparse_spd_solver.h"
@@ -39,6 +40,8 @@ struct ContractionParameters {
     int maxIterations = 20;
     double terminationThreshold = 0.01;     // stop when the extent ratio falls by less than this
     OutlierParameters outliers;             // points set aside before the 1-rings (not the paper's)
+    int denoisingPasses = -1;               // contract a denoised copy (point_denoising.h): -1 = only
+                                            // noisy clouds, 0 = never (the paper's), 1..10 passes
     LinearSolver solver = LinearSolver::Cholmod;
 };
 
@@ -65,6 +68,8 @@ struct ContractionResult {
     int neighbourCount = 0;
     double initialContractionWeight = 0.0;
     double neighbourhoodSeconds = 0.0;
+    int denoisingPasses = 0;
+    double surfaceNoise = -1;  // measured for the automatic choice, else -1
 };
 
 class LaplacianContraction {
@@ -114,6 +119,7 @@ private:
     double initialExtentSum_ = 0.0;
     double contractionWeight_ = 0.0, initialContractionWeight_ = 0.0;
     double neighbourhoodSeconds_ = 0.0;
+    DenoisingChoice denoising_;
     std::vector<IterationReport> history_;
     StopReason stopReason_ = StopReason::NotStopped;
     bool contractionStarted_ = false;  // some iteration shrank the rings by the threshold

@@ -34,6 +34,7 @@ std::string libraryParameterName(Parameter p) {
         case Parameter::OutlierIsolation: return "the outlier isolation factor";
         case Parameter::OutlierLocalFactor: return "the outlier local factor";
         case Parameter::OutlierClusterShare: return "the outlier cluster share";
+        case Parameter::DenoisingPasses: return "the denoising passes";
     }
     return "a parameter";
 }

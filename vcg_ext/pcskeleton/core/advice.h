@@ -35,6 +35,7 @@ enum class Parameter {
     OutlierIsolation,
     OutlierLocalFactor,
     OutlierClusterShare,
+    DenoisingPasses,
 };
 
 // Steps the user takes outside the computation that found the problem.
