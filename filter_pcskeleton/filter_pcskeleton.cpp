@@ -272,8 +272,10 @@ QString FilterPCSkeletonPlugin::filterInfo(FilterIDType filter) const {
                 "Laplacian smoothing with cotangent weights on local tangent-plane Delaunay 1-rings. "
                 "Adds a new layer with the contracted points (same order as the input's vertices); the input "
                 "layer is not changed. Faces are ignored, so meshes, meshes with boundaries and polygon soups "
-                "work as point clouds. All parameters are relative to the cloud's size: the defaults are the "
-                "paper's.") + kPaperReference;
+                "work as point clouds. All parameters are relative to the cloud's size. The defaults are the "
+                "paper's, plus two steps it does not have: outliers are set aside and a noisy cloud is contracted "
+                "through a denoised copy (untick 'Detect outliers' and set 'Denoising passes' to 0 for the paper's "
+                "contraction exactly).") + kPaperReference;
         case FP_COMPUTE_SKELETON:
             return QString(
                 "Computes the curve skeleton of the current layer's points: Laplacian contraction, then "

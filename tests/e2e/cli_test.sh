@@ -29,6 +29,8 @@ $GRAPH check elephant.ply --cycles 0 --components 1 --min-tips 6
 grep -q "^pcskeleton: .*knot.off: 2080 points -> .* 1 cycle, 0 tips" knot.log || { cat knot.log; fail "no summary line"; }
 grep -q "^Contraction: .* converged" knot.log || { cat knot.log; fail "the report does not say contraction converged"; }
 grep -q "^No warnings." knot.log || { cat knot.log; fail "a clean knot should give no warning"; }
+grep -q "^Denoising: none (automatic: surface noise 0.0[0-9]*, a clean cloud)." knot.log \
+  || { cat knot.log; fail "the report does not say the clean knot was not denoised"; }
 grep -q "^Tip extension: [0-9]* limbs extended" elephant.log || { cat elephant.log; fail "the elephant's limbs were not extended"; }
 
 # --report writes the same report to a file; an unconverged run warns and names the fix.
@@ -108,7 +110,7 @@ fine=$($GRAPH show knot.ply | sed 's/.*nodes.: \([0-9]*\).*/\1/')
 "$PCSKELETON" --help >help.txt
 for option in --contracted --correspondence --k --wl --wh --sl --max-wl --max-wh --row-limit --iterations \
               --threshold --radius --no-extend-tips --refine --no-refine --no-recentre --keep-outliers --outlier-isolation \
-              --outlier-local --outlier-cluster --paper --report --force --quiet; do
+              --outlier-local --outlier-cluster --denoise --paper --report --force --quiet; do
   grep -q -- "$option" help.txt || fail "--help does not document $option"
 done
 grep -q "\[0.02\]" help.txt || fail "--help does not give the radius default"
@@ -136,6 +138,7 @@ expect_error 2 "expects a number" $M/knot.off -o out.ply --radius big
 expect_error 2 "unknown option" $M/knot.off -o out.ply --fast
 expect_error 1 "^pcskeleton: --radius must be a fraction" $M/knot.off -o out.ply --radius 2
 expect_error 1 "^pcskeleton: --sl must be at least 1" $M/knot.off -o out.ply --sl 0.5
+expect_error 1 "^pcskeleton: --denoise must be between 0 (off) and 10, or -1" $M/knot.off -o out.ply --denoise 11
 for i in $(seq 0 11); do echo "$((i % 4)) $((i / 4)) $((i % 3))"; done >few.xyz
 expect_error 1 "at least 21 are needed.*Lower --k" few.xyz -o out.ply --k 20
 [ ! -e out.ply ] || fail "a failed run wrote out.ply"

@@ -34,8 +34,8 @@ shot point-set-menu
 click 640 486 1.5     # Contract Point Cloud (Laplacian)
 wait_window "Contract Point Cloud \(Laplacian\)" 10
 shot filter-dialog
-click 293 670 4       # Apply
-click 102 670         # Close
+click 323 716 4       # Apply
+click 112 716         # Close
 click 472 114         # hide the input layer, to see the result
 click 540 145         # make the contracted layer current
 shot contracted-layer
@@ -73,8 +73,8 @@ click 160 386         # Point Set
 click 640 436 1.5     # Compute Curve Skeleton (Laplacian Contraction)
 wait_window "Compute Curve Skeleton" 10
 shot skeleton-dialog
-click 324 830 5       # Apply
-click 112 830         # Close
+click 324 861 5       # Apply
+click 112 861         # Close
 shot skeleton-layer
 click 120 10          # Filters
 click 160 386         # Point Set
