@@ -143,7 +143,7 @@ void printHelp() {
         "                        projection onto the plane of each point's k nearest\n"
         "                        neighbours; the nodes still sit among the points as given.\n"
         "                        [%d] = automatic: one pass if the cloud is noisy (its\n"
-        "                        surface noise, in the report, above 0.1), none if clean;\n"
+        "                        surface noise, in the report, above 0.25), none if clean;\n"
         "                        0 never (the paper); 2-10 for very noisy scans\n"
         "  --paper               the paper's pipeline exactly: the same as --keep-outliers\n"
         "                        --denoise 0 --no-recentre --no-refine --no-extend-tips\n"

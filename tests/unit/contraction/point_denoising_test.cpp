@@ -30,7 +30,7 @@ Radii radiiOf(const PointList& points) {
 
 TEST(PointDenoising, SurfaceNoiseTellsCleanFromNoisyAtAnyScale) {
     const PointList clean = shapes::sphere(4000, 1.0);
-    const PointList noisy = shapes::withNoise(clean, 0.01);  // 1% of the diagonal
+    const PointList noisy = shapes::withNoise(clean, 0.02);  // 2% of the diagonal
     EXPECT_LT(surfaceNoise(clean, 30), 0.02);
     EXPECT_GT(surfaceNoise(noisy, 30), kNoisySurface);
     // A coarse clean sampling is still clean: the quadric follows the curvature.
@@ -56,7 +56,7 @@ TEST(PointDenoising, TheNoiseAcrossTheSurfaceGoesCleanPointsBarelyMove) {
 TEST(PointDenoising, AutomaticOnlyForNoisyCloudsAndPassesInRange) {
     const PointList clean = shapes::sphere(4000, 1.0);
     EXPECT_EQ(chooseDenoising(clean, 30, kAutomaticDenoising).passes, 0);
-    EXPECT_EQ(chooseDenoising(shapes::withNoise(clean, 0.01), 30, kAutomaticDenoising).passes, kPassesForNoisySurface);
+    EXPECT_EQ(chooseDenoising(shapes::withNoise(clean, 0.02), 30, kAutomaticDenoising).passes, kPassesForNoisySurface);
     EXPECT_EQ(chooseDenoising(clean, 30, 3).passes, 3);
     EXPECT_LT(chooseDenoising(clean, 30, 3).surfaceNoise, 0) << "not measured when the passes are given";
     for (int wrong : {-2, 11}) {

@@ -17,10 +17,11 @@ namespace pcskeleton {
 // residual of a quadratic height field fitted to the point's k nearest neighbours, over
 // the neighbourhood's RMS extent. A quadric follows the curvature of a clean surface, even
 // a coarse one: 0.0002-0.08 on the robustness suite's clean, one-view, holed and outlier
-// cases; 0.14-0.5 with 0.5-2% noise or misaligned scans.
+// cases, 0.21 on the elephant mesh's very uneven vertices; 0.14-0.3 with 0.5% noise or
+// misalignment (where denoising changed nothing), 0.26-0.5 with 1-2%.
 double surfaceNoise(const PointList& points, int neighbours);
 
-inline constexpr double kNoisySurface = 0.1;     // surfaceNoise() above this: denoise
+inline constexpr double kNoisySurface = 0.25;    // surfaceNoise() above this: denoise
 inline constexpr int kAutomaticDenoising = -1;   // denoisingPasses: decide by surfaceNoise()
 inline constexpr int kPassesForNoisySurface = 2;
 inline constexpr int kMaximumDenoisingPasses = 10;
