@@ -369,8 +369,8 @@ void FilterPCSkeletonPlugin::initParameterSet(QAction* action, MeshDocument& md,
                 "Also adds the contracted points as a layer, e.g. to thin them again later with other settings "
                 "(Skeleton from Contracted Points)."));
             parameters.addParam(RichBool("paperPipeline", false, "The paper's pipeline only",
-                "Exactly the paper's steps: no outlier detection, re-centring, refinement or tip extension, "
-                "whatever is ticked above. For comparison with the paper and other implementations of it."));
+                "Exactly the paper's steps: no outlier detection, denoising, re-centring, refinement or tip "
+                "extension, whatever is set above. For comparison with the paper and other implementations of it."));
             break;
         case FP_SKELETON_FROM_CONTRACTED:
             parameters.addParam(RichMesh("sourceLayer", likelySourceOf(md, md.mm()), &md, "Original points",
