@@ -1,7 +1,9 @@
 // pcskeleton: point cloud in, curve skeleton out, from the command line. Built from
 // vcg_ext alone (no Qt, no X server) for pipelines, benchmarks and headless machines.
 #include <pcskeleton/curve_skeleton.h>
+#include <pcskeleton/reconstruction/skeleton_reconstruction.h>
 #include <pcskeleton/io/input_file.h>
+#include <pcskeleton/io/mesh_io.h>
 #include <pcskeleton/io/point_cloud_io.h>
 #include <pcskeleton/io/skeleton_io.h>
 
@@ -21,7 +23,10 @@ namespace {
 
 struct Options {
     std::string input, output, contracted, correspondence, report;
+    std::string skeleton;  // a given (edited) skeleton to reconstruct from, instead of computing one
+    std::string surface;   // where to write the reconstructed surface
     SkeletonParameters parameters;
+    ReconstructionParameters reconstruction;
     bool quiet = false;
     bool force = false;  // replace existing output files
 };
@@ -50,7 +55,13 @@ std::string optionOf(Parameter parameter) {
         case Parameter::OutlierLocalFactor: return "--outlier-local";
         case Parameter::OutlierClusterShare: return "--outlier-cluster";
         case Parameter::DenoisingPasses: return "--denoise";
-        default: return libraryTerms().parameter(parameter);  // reconstruction: not an option here
+        case Parameter::Resolution: return "--resolution";
+        case Parameter::SmoothWeight: return "--smooth-weight";
+        case Parameter::SurfaceWeight: return "--surface-weight";
+        case Parameter::SkeletonWeight: return "--skeleton-weight";
+        case Parameter::OutsideWeight: return "--outside-weight";
+        case Parameter::OutsideDistance: return "--outside-radii";
+        default: return libraryTerms().parameter(parameter);
     }
 }
 
@@ -60,6 +71,8 @@ std::string stepInThisTool(Step step) {
         case Step::RemoveNonFinitePoints: return "remove them from the input first";
         case Step::DeleteNodes: return "delete them by hand (MeshLab's Edit Skeleton tool)";
         case Step::MergeNodes: return "merge their nodes by hand (MeshLab's Edit Skeleton tool)";
+        case Step::SetNodeRadii: return "give the skeleton radii (a .ply skeleton from -o has them)";
+        case Step::ComputeSkeleton: return "compute the skeleton of these points (leave out --skeleton)";
         default: return libraryTerms().step(step);
     }
 }
@@ -73,8 +86,12 @@ void printHelp() {
     const ContractionParameters c;
     const ThinningParameters t;
     const OutlierParameters o;
+    const ReconstructionParameters r;
     std::printf(
-        "Usage: pcskeleton INPUT -o OUTPUT [options]\n"
+        "Usage: pcskeleton INPUT -o OUTPUT [options]             the skeleton\n"
+        "       pcskeleton INPUT -o OUTPUT --surface SURFACE [...]  and the surface it gives\n"
+        "       pcskeleton INPUT --skeleton SKELETON --surface SURFACE\n"
+        "                                          the surface from a given (edited) skeleton\n"
         "\n"
         "Extracts the curve skeleton of a point cloud by Laplacian-based contraction\n"
         "(Cao et al., SMI 2010): contraction, thinning, embedding. The paper's parameters\n"
@@ -88,6 +105,18 @@ void printHelp() {
         "           (x y z per line); never modified\n"
         "-o FILE    the skeleton: .ply (vertices with radius, element edge), .obj (v and\n"
         "           l lines) or .cg (Starlab curve-skeleton format; no radius)\n"
+        "\n"
+        "Surface (paper Sec. V): a closed surface through the points whose inside and\n"
+        "topology follow the skeleton; the scan's holes are closed where the skeleton says.\n"
+        "  --surface FILE        write it to FILE: .ply (binary), .off or .obj\n"
+        "  --skeleton FILE       reconstruct from this skeleton (.ply with radii, as -o\n"
+        "                        writes it; .obj/.cg have none) instead of computing one\n"
+        "  --resolution N        grid cells on the longest side [%d]\n"
+        "  --smooth-weight X     w1, smoothness of the field [%g]\n"
+        "  --surface-weight X    w2, the surface passes through the points [%g]\n"
+        "  --skeleton-weight X   w3, the field is -radius on the skeleton [%g]\n"
+        "  --outside-weight X    w4, the field is positive far from the skeleton [%g]\n"
+        "  --outside-radii K     \"far\" is more than K node radii from the skeleton [%g]\n"
         "\n"
         "After the run a quality report goes to stderr: cycles, tips, junctions, parts,\n"
         "whether contraction converged, and warnings (points that did not contract, parts\n"
@@ -158,6 +187,7 @@ void printHelp() {
         "\n"
         "Exit status: 0 on success, 1 when the input cannot be processed (the reason is\n"
         "printed on one line), 2 on a command-line error.\n",
+        r.resolution, r.smoothWeight, r.surfaceWeight, r.skeletonWeight, r.outsideWeight, r.outsideRadii,
         c.neighbourCount, c.initialContractionWeight, c.initialAttractionWeight, c.contractionScale,
         c.maxContractionWeight, c.maxAttractionWeight, c.laplacianRowLimit, c.maxIterations, c.terminationThreshold,
         t.sampleRadius, o.isolationFactor, o.localFactor, o.clusterShare, c.denoisingPasses);
@@ -188,12 +218,16 @@ void checkOutputs(const Options& options) {
     const std::vector<std::pair<std::string, std::string>> outputs = {{"-o", options.output},
                                                                       {"--contracted", options.contracted},
                                                                       {"--correspondence", options.correspondence},
-                                                                      {"--report", options.report}};
+                                                                      {"--report", options.report},
+                                                                      {"--surface", options.surface}};
     for (std::size_t i = 0; i < outputs.size(); ++i) {
         const auto& [option, path] = outputs[i];
         if (path.empty()) continue;
-        if (samePath(path, options.input)) {
-            throw UsageError(option + " '" + path + "' is the input file; choose another name (the input is never overwritten)");
+        for (const std::string& input : {options.input, options.skeleton}) {
+            if (!input.empty() && samePath(path, input)) {
+                throw UsageError(option + " '" + path +
+                                 "' is an input file; choose another name (inputs are never overwritten)");
+            }
         }
         for (std::size_t j = 0; j < i; ++j) {
             if (!outputs[j].second.empty() && samePath(path, outputs[j].second)) {
@@ -214,12 +248,21 @@ void checkOutputs(const Options& options) {
 // Returns false when --help was given.
 bool parseArguments(int argc, char** argv, Options& options) {
     ContractionParameters& c = options.parameters.contraction;
+    ReconstructionParameters& r = options.reconstruction;
     const std::map<std::string, std::function<void(const std::string&)>> withValue = {
         {"-o", [&](const std::string& v) { options.output = v; }},
         {"--output", [&](const std::string& v) { options.output = v; }},
         {"--contracted", [&](const std::string& v) { options.contracted = v; }},
         {"--correspondence", [&](const std::string& v) { options.correspondence = v; }},
         {"--report", [&](const std::string& v) { options.report = v; }},
+        {"--skeleton", [&](const std::string& v) { options.skeleton = v; }},
+        {"--surface", [&](const std::string& v) { options.surface = v; }},
+        {"--resolution", [&](const std::string& v) { r.resolution = parseInteger("--resolution", v); }},
+        {"--smooth-weight", [&](const std::string& v) { r.smoothWeight = parseNumber("--smooth-weight", v); }},
+        {"--surface-weight", [&](const std::string& v) { r.surfaceWeight = parseNumber("--surface-weight", v); }},
+        {"--skeleton-weight", [&](const std::string& v) { r.skeletonWeight = parseNumber("--skeleton-weight", v); }},
+        {"--outside-weight", [&](const std::string& v) { r.outsideWeight = parseNumber("--outside-weight", v); }},
+        {"--outside-radii", [&](const std::string& v) { r.outsideRadii = parseNumber("--outside-radii", v); }},
         {"--k", [&](const std::string& v) { c.neighbourCount = parseInteger("--k", v); }},
         {"--wl", [&](const std::string& v) { c.initialContractionWeight = parseNumber("--wl", v); }},
         {"--wh", [&](const std::string& v) { c.initialAttractionWeight = parseNumber("--wh", v); }},
@@ -264,8 +307,18 @@ bool parseArguments(int argc, char** argv, Options& options) {
         }
     }
     if (options.input.empty()) throw UsageError("no input file");
-    if (options.output.empty()) throw UsageError("no output file (-o FILE)");
-    if (!isSkeletonFileName(options.output)) throw UsageError("the output must end in .ply, .obj or .cg");
+    if (!options.skeleton.empty()) {
+        if (options.surface.empty()) throw UsageError("--skeleton is for reconstruction: add --surface FILE");
+        if (!options.output.empty() || !options.contracted.empty() || !options.correspondence.empty()) {
+            throw UsageError("with --skeleton no skeleton is computed: leave out -o, --contracted and --correspondence");
+        }
+    } else {
+        if (options.output.empty()) throw UsageError("no output file (-o FILE)");
+        if (!isSkeletonFileName(options.output)) throw UsageError("the output must end in .ply, .obj or .cg");
+    }
+    if (!options.surface.empty() && !isMeshFileName(options.surface)) {
+        throw UsageError("the surface must end in .ply, .off or .obj");
+    }
     checkOutputs(options);
     return true;
 }
@@ -305,23 +358,42 @@ int main(int argc, char** argv) {
         if (showProgress) {
             progress = [](int percent, const char* what) { std::fprintf(stderr, "\r%3d%% %-40s", percent, what); };
         }
-        const SkeletonResult result = computeCurveSkeleton(points, options.parameters, progress);
-        if (showProgress) std::fprintf(stderr, "\r%-46s\r", "");
-        writeSkeleton(result.skeleton, options.output);
-        if (!options.contracted.empty()) writePointCloud(result.contraction.contracted, options.contracted);
-        if (!options.correspondence.empty()) writeCorrespondence(result.skeleton, options.correspondence);
-        const std::string report = describe(result.quality, commandLineTerms());
-        if (!options.report.empty()) writeText(options.report, [&](std::ostream& out) { out << report << '\n'; });
-        if (!options.quiet) {
-            const StageSeconds& s = result.seconds;
-            std::fprintf(stderr,
-                         "pcskeleton: %s: %zu points -> %s; contraction: %zu iterations, %s; "
-                         "time: 1-rings %.2f s, contraction %.2f s, thinning %.2f s, embedding %.2f s, "
-                         "finishing %.2f s\n%s\n",
-                         options.input.c_str(), points.size(), describe(result.quality.topology).c_str(),
-                         result.contraction.iterations.size(), describe(result.contraction.stopReason).c_str(),
-                         s.neighbourhoods, s.contraction, s.thinning, s.embedding, s.finishing, report.c_str());
+        std::string report;
+        SkeletonGraph skeleton;
+        if (!options.skeleton.empty()) {
+            skeleton = readSkeleton(options.skeleton);
+        } else {
+            const SkeletonResult result = computeCurveSkeleton(points, options.parameters, progress);
+            if (showProgress) std::fprintf(stderr, "\r%-46s\r", "");
+            writeSkeleton(result.skeleton, options.output);
+            if (!options.contracted.empty()) writePointCloud(result.contraction.contracted, options.contracted);
+            if (!options.correspondence.empty()) writeCorrespondence(result.skeleton, options.correspondence);
+            report = describe(result.quality, commandLineTerms());
+            if (!options.quiet) {
+                const StageSeconds& s = result.seconds;
+                std::fprintf(stderr,
+                             "pcskeleton: %s: %zu points -> %s; contraction: %zu iterations, %s; "
+                             "time: 1-rings %.2f s, contraction %.2f s, thinning %.2f s, embedding %.2f s, "
+                             "finishing %.2f s\n%s\n",
+                             options.input.c_str(), points.size(), describe(result.quality.topology).c_str(),
+                             result.contraction.iterations.size(), describe(result.contraction.stopReason).c_str(),
+                             s.neighbourhoods, s.contraction, s.thinning, s.embedding, s.finishing, report.c_str());
+            }
+            skeleton = result.skeleton;
         }
+        if (!options.surface.empty()) {
+            const Reconstruction surface = reconstructFromSkeleton(points, skeleton, options.reconstruction, progress);
+            if (showProgress) std::fprintf(stderr, "\r%-46s\r", "");
+            writeTriangleMesh(surface.mesh, options.surface);
+            const std::string surfaceReport = describe(surface.report, commandLineTerms());
+            if (!options.quiet) {
+                std::fprintf(stderr, "pcskeleton: surface %s: %zu vertices, %zu triangles\n%s\n",
+                             options.surface.c_str(), surface.mesh.vertices.size(), surface.mesh.triangles.size(),
+                             surfaceReport.c_str());
+            }
+            report += (report.empty() ? "" : "\n") + surfaceReport;
+        }
+        if (!options.report.empty()) writeText(options.report, [&](std::ostream& out) { out << report << '\n'; });
         return 0;
     } catch (const InvalidInput& e) {
         std::fprintf(stderr, "pcskeleton: %s\n", describe(e.problem(), commandLineTerms()).c_str());

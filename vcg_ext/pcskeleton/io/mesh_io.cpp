@@ -1,0 +1,63 @@
+#include "pcskeleton/io/mesh_io.h"
+
+#include "pcskeleton/io/input_file.h"
+
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+
+namespace pcskeleton {
+
+namespace {
+
+void writePly(const TriangleMesh& mesh, const std::string& path) {
+    std::FILE* out = std::fopen(path.c_str(), "wb");
+    if (!out) throw InvalidInput("Cannot write '" + path + "': the file cannot be created.");
+    std::fprintf(out,
+                 "ply\nformat binary_little_endian 1.0\nelement vertex %zu\nproperty double x\nproperty double y\n"
+                 "property double z\nelement face %zu\nproperty list uchar int vertex_indices\nend_header\n",
+                 mesh.vertices.size(), mesh.triangles.size());
+    bool ok = true;
+    for (const Point& p : mesh.vertices) ok = ok && std::fwrite(p.data(), sizeof(double), 3, out) == 3;
+    const std::uint8_t corners = 3;
+    for (const auto& t : mesh.triangles) {
+        const std::int32_t indices[3] = {t[0], t[1], t[2]};
+        ok = ok && std::fwrite(&corners, 1, 1, out) == 1 && std::fwrite(indices, sizeof(indices), 1, out) == 1;
+    }
+    ok = std::fclose(out) == 0 && ok;
+    if (!ok) throw InvalidInput("Cannot write '" + path + "': writing failed (disk full?).");
+}
+
+// OFF and OBJ: text, vertices then triangles (OBJ's indices are 1-based).
+void writeText(const TriangleMesh& mesh, const std::string& path, bool obj) {
+    std::ofstream out(path);
+    if (!out) throw InvalidInput("Cannot write '" + path + "': the file cannot be created.");
+    out << std::setprecision(17);
+    if (!obj) out << "OFF\n" << mesh.vertices.size() << ' ' << mesh.triangles.size() << " 0\n";
+    for (const Point& p : mesh.vertices) out << (obj ? "v " : "") << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+    for (const auto& t : mesh.triangles) {
+        if (obj) out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+        else out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+    }
+    out.close();
+    if (!out) throw InvalidInput("Cannot write '" + path + "': writing failed (disk full?).");
+}
+
+}  // namespace
+
+bool isMeshFileName(const std::string& path) {
+    const std::string ext = extensionOf(path);
+    return ext == "ply" || ext == "off" || ext == "obj";
+}
+
+void writeTriangleMesh(const TriangleMesh& mesh, const std::string& path) {
+    if (!isMeshFileName(path)) throw InvalidInput("Cannot write '" + path + "': surfaces are written as .ply, .off or .obj.");
+    const std::string ext = extensionOf(path);
+    writeFileAtomically(path, [&](const std::string& temporary) {
+        if (ext == "ply") writePly(mesh, temporary);
+        else writeText(mesh, temporary, ext == "obj");
+    });
+}
+
+}  // namespace pcskeleton
