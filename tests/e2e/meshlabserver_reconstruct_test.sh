@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Skeleton-driven reconstruction through meshlabserver and the shipped script: a torus
 # scan with 20% of its ring missing, reconstructed with its ring skeleton (a closed
-# genus-1 surface) and with the ring cut across the gap (genus 0); a skeleton without
-# radii is refused with the reason in the log and no file.
+# genus-1 surface) and with the ring cut across the gap (genus 0); the one-shot
+# scan_to_surface.mlx; a skeleton without radii is refused with the reason in the log
+# and no file.
 # usage: meshlabserver_reconstruct_test.sh MESHLABSERVER SCRIPT WORKDIR
 set -euo pipefail
 MESHLABSERVER="$1"; SCRIPT="$2"; WORK="$3"
@@ -39,6 +40,15 @@ PY
 }
 reconstruct ring 1       # the skeleton's loop bridges the missing band
 reconstruct ring_cut 0   # cut where the data is missing: the band stays open
+
+# From the scan to its surface in one script: its own skeleton (a cut ring: the data has a
+# gap) saved next to it, and a closed genus-0 surface as the current layer.
+xvfb-run -a "$MESHLABSERVER" -i torus.ply -s "$(dirname "$SCRIPT")/scan_to_surface.mlx" -o surface_own.off \
+  >own.log 2>&1 || { cat own.log; echo "FAIL: meshlabserver with scan_to_surface.mlx"; exit 1; }
+[ -s torus_skeleton.ply ] || { cat own.log; echo "FAIL: the one-shot script did not save the skeleton"; exit 1; }
+grep -q "result: 1 component, genus 0, closed 2-manifold" own.log \
+  || { cat own.log; echo "FAIL: the one-shot script's surface is not closed and of genus 0"; exit 1; }
+[ -s surface_own.off ] || { echo "FAIL: the one-shot script's surface was not saved"; exit 1; }
 
 # A skeleton file without radii (quality 0): refused, the reason logged, nothing written.
 sed -e 's/ 0\.3$/ 0/' ring.ply > flat.ply
