@@ -11,6 +11,30 @@
 
 namespace pcskeleton {
 
+namespace {
+
+// The PCA frame of some of the points: their centroid, and the eigenvectors of their
+// covariance by increasing spread (column 0 is the fitted plane's normal).
+struct LocalFrame {
+    Point centroid;
+    Eigen::Matrix3d axes;
+};
+
+LocalFrame fitLocalFrame(const PointList& points, const std::vector<int>& subset) {
+    LocalFrame frame{Point::Zero(), Eigen::Matrix3d::Identity()};
+    for (int j : subset) frame.centroid += points[std::size_t(j)];
+    frame.centroid /= double(subset.size());
+    Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+    for (int j : subset) {
+        const Point d = points[std::size_t(j)] - frame.centroid;
+        covariance += d * d.transpose();
+    }
+    frame.axes = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance).eigenvectors();
+    return frame;
+}
+
+}  // namespace
+
 double surfaceNoise(const PointList& points, int neighbours) {
     const PointIndex index(points);
     const long samples = long((points.size() + 6) / 7);
@@ -21,17 +45,9 @@ double surfaceNoise(const PointList& points, int neighbours) {
 #pragma omp for schedule(static)
         for (long s = 0; s < samples; ++s) {
             index.nearest(points[std::size_t(s) * 7], neighbours, found);
-            Point centroid = Point::Zero();
-            for (int j : found) centroid += points[std::size_t(j)];
-            centroid /= double(found.size());
-            Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-            for (int j : found) {
-                const Point d = points[std::size_t(j)] - centroid;
-                covariance += d * d.transpose();
-            }
-            const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> frame(covariance);
-            const Point normal = frame.eigenvectors().col(0), u = frame.eigenvectors().col(2),
-                        v = frame.eigenvectors().col(1);
+            const LocalFrame frame = fitLocalFrame(points, found);
+            const Point& centroid = frame.centroid;
+            const Point normal = frame.axes.col(0), u = frame.axes.col(2), v = frame.axes.col(1);
             Eigen::MatrixXd basis(found.size(), 6);
             Eigen::VectorXd height(found.size());
             double extent = 0;
@@ -77,18 +93,10 @@ PointList denoisedCopy(const PointList& points, int neighbours, int passes) {
 #pragma omp for schedule(static)
             for (long i = 0; i < long(current.size()); ++i) {
                 index.nearest(current[std::size_t(i)], neighbours, found);
-                Point centroid = Point::Zero();
-                for (int j : found) centroid += current[std::size_t(j)];
-                centroid /= double(found.size());
-                Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-                for (int j : found) {
-                    const Point d = current[std::size_t(j)] - centroid;
-                    covariance += d * d.transpose();
-                }
-                const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
-                const Point normal = solver.eigenvectors().col(0);
+                const LocalFrame frame = fitLocalFrame(current, found);
+                const Point normal = frame.axes.col(0);
                 const Point& p = current[std::size_t(i)];
-                next[std::size_t(i)] = p - normal * normal.dot(p - centroid);
+                next[std::size_t(i)] = p - normal * normal.dot(p - frame.centroid);
             }
         }
         current.swap(next);
