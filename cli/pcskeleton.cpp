@@ -171,9 +171,9 @@ void printHelp() {
         "  --denoise N           contract a copy of the points denoised by N passes of\n"
         "                        projection onto the plane of each point's k nearest\n"
         "                        neighbours; the nodes still sit among the points as given.\n"
-        "                        [%d] = automatic: one pass if the cloud is noisy (its\n"
-        "                        surface noise, in the report, above 0.25), none if clean;\n"
-        "                        0 never (the paper); 2-10 for very noisy scans\n"
+        "                        [%d] = automatic: %d passes if the cloud is noisy (its\n"
+        "                        surface noise, in the report, above %g), none if clean;\n"
+        "                        0 never (the paper); 1-10 passes always\n"
         "  --paper               the paper's pipeline exactly: the same as --keep-outliers\n"
         "                        --denoise 0 --no-recentre --no-refine --no-extend-tips\n"
         "  --report FILE         also write the quality report to FILE\n"
@@ -190,7 +190,8 @@ void printHelp() {
         r.resolution, r.smoothWeight, r.surfaceWeight, r.skeletonWeight, r.outsideWeight, r.outsideRadii,
         c.neighbourCount, c.initialContractionWeight, c.initialAttractionWeight, c.contractionScale,
         c.maxContractionWeight, c.maxAttractionWeight, c.laplacianRowLimit, c.maxIterations, c.terminationThreshold,
-        t.sampleRadius, o.isolationFactor, o.localFactor, o.clusterShare, c.denoisingPasses);
+        t.sampleRadius, o.isolationFactor, o.localFactor, o.clusterShare, c.denoisingPasses,
+        kPassesForNoisySurface, kNoisySurface);
 }
 
 double parseNumber(const std::string& option, const std::string& text) {

@@ -51,9 +51,10 @@ void addDenoisingParameter(RichParameterList& list) {
         parameterLabel(Parameter::DenoisingPasses),
         "The 1-rings and the contraction use a copy of the points denoised by this many passes of projection "
         "onto the plane of each point's k nearest neighbours; the nodes and radii still come from the points as "
-        "they are. Noise and misaligned scans then leave far fewer spurs and false loops. -1 = automatic: one "
-        "pass if the cloud is noisy (surface noise above 0.25, given in the log), none if it is clean; 0 = never, "
-        "as the paper; 2 to 10 for very noisy scans."));
+        "they are. Noise and misaligned scans then leave far fewer spurs and false loops. -1 = automatic: "
+        + QString::number(pcskeleton::kPassesForNoisySurface) + " passes if the cloud is noisy (surface noise above "
+        + QString::number(pcskeleton::kNoisySurface) + ", given in the log), none if it is clean; 0 = never, as "
+        "the paper; 1 to 10 passes always."));
 }
 
 void addContractionParameters(RichParameterList& list) {
