@@ -37,16 +37,16 @@ const char* const kNeighbourHelp =
     "0 = automatic: 1.2% of the points, between 8 and 30 (the paper's rule). Raise it for noisy scans; "
     "lower it if close-by parts (fingers, claws) get connected.";
 
-void addOutlierParameter(RichParameterList& list) {
+// Which points the contraction works on (outliers set aside, a denoised copy): the
+// contraction and the skeleton filters ask for them, and the thinning filter must repeat
+// them to rebuild the contraction's 1-rings.
+void addInputCleaningParameters(RichParameterList& list) {
     list.addParam(RichBool("detectOutliers", pcskeleton::OutlierParameters().detect,
         parameterLabel(Parameter::OutlierDetection),
         "Sets aside, before the 1-rings, points that do not belong to the sampled surface: isolated points and "
         "small sparse clusters, judged against the cloud's own point spacing. They get no node (grey in the "
         "segments layer) and are counted in the log; the layer itself is not changed. Untick to keep every "
         "point, as the paper does."));
-}
-
-void addDenoisingParameter(RichParameterList& list) {
     list.addParam(RichInt("denoisePasses", pcskeleton::ContractionParameters().denoisingPasses,
         parameterLabel(Parameter::DenoisingPasses),
         "The 1-rings and the contraction use a copy of the points denoised by this many passes of projection "
@@ -55,6 +55,11 @@ void addDenoisingParameter(RichParameterList& list) {
         + QString::number(pcskeleton::kPassesForNoisySurface) + " passes if the cloud is noisy (surface noise above "
         + QString::number(pcskeleton::kNoisySurface) + ", given in the log), none if it is clean; 0 = never, as "
         "the paper; 1 to 10 passes always."));
+}
+
+void readInputCleaning(const RichParameterList& list, pcskeleton::ContractionParameters& p) {
+    p.outliers.detect = list.getBool("detectOutliers");
+    p.denoisingPasses = list.getInt("denoisePasses");
 }
 
 void addContractionParameters(RichParameterList& list) {
@@ -89,8 +94,7 @@ void addContractionParameters(RichParameterList& list) {
         parameterLabel(Parameter::TerminationThreshold),
         "Contraction stops when the total 1-ring size shrank by less than this fraction of its initial value "
         "in the last iteration."));
-    addOutlierParameter(list);
-    addDenoisingParameter(list);
+    addInputCleaningParameters(list);
 }
 
 pcskeleton::ContractionParameters readContractionParameters(const RichParameterList& list) {
@@ -104,8 +108,7 @@ pcskeleton::ContractionParameters readContractionParameters(const RichParameterL
     p.laplacianRowLimit = list.getFloat("laplacianRowLimit");
     p.maxIterations = list.getInt("maxIterations");
     p.terminationThreshold = list.getFloat("terminationThreshold");
-    p.outliers.detect = list.getBool("detectOutliers");
-    p.denoisingPasses = list.getInt("denoisePasses");
+    readInputCleaning(list, p);
     return p;
 }
 
@@ -138,8 +141,7 @@ void addThinningParameters(RichParameterList& list) {
 pcskeleton::ContractionParameters contractionOfThinning(const RichParameterList& list) {
     pcskeleton::ContractionParameters p;
     p.neighbourCount = list.getInt("k");
-    p.outliers.detect = list.getBool("detectOutliers");
-    p.denoisingPasses = list.getInt("denoisePasses");
+    readInputCleaning(list, p);
     return p;
 }
 
@@ -378,8 +380,7 @@ void FilterPCSkeletonPlugin::initParameterSet(QAction* action, MeshDocument& md,
                 "The layer that was contracted: its points give the 1-rings, the node positions and the radii."));
             parameters.addParam(RichInt("k", 0, parameterLabel(Parameter::NeighbourCount),
                 QString(kNeighbourHelp) + " Use the value the contraction used."));
-            addOutlierParameter(parameters);
-            addDenoisingParameter(parameters);
+            addInputCleaningParameters(parameters);
             addThinningParameters(parameters);
             break;
         case FP_EXPORT_SKELETON: {
