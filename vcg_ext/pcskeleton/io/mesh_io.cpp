@@ -1,33 +1,14 @@
 #include "pcskeleton/io/mesh_io.h"
 
 #include "pcskeleton/io/input_file.h"
+#include "pcskeleton/io/ply_writer.h"
 
-#include <cstdint>
-#include <cstdio>
 #include <fstream>
 #include <iomanip>
 
 namespace pcskeleton {
 
 namespace {
-
-void writePly(const TriangleMesh& mesh, const std::string& path) {
-    std::FILE* out = std::fopen(path.c_str(), "wb");
-    if (!out) throw InvalidInput("Cannot write '" + path + "': the file cannot be created.");
-    std::fprintf(out,
-                 "ply\nformat binary_little_endian 1.0\nelement vertex %zu\nproperty double x\nproperty double y\n"
-                 "property double z\nelement face %zu\nproperty list uchar int vertex_indices\nend_header\n",
-                 mesh.vertices.size(), mesh.triangles.size());
-    bool ok = true;
-    for (const Point& p : mesh.vertices) ok = ok && std::fwrite(p.data(), sizeof(double), 3, out) == 3;
-    const std::uint8_t corners = 3;
-    for (const auto& t : mesh.triangles) {
-        const std::int32_t indices[3] = {t[0], t[1], t[2]};
-        ok = ok && std::fwrite(&corners, 1, 1, out) == 1 && std::fwrite(indices, sizeof(indices), 1, out) == 1;
-    }
-    ok = std::fclose(out) == 0 && ok;
-    if (!ok) throw InvalidInput("Cannot write '" + path + "': writing failed (disk full?).");
-}
 
 // OFF and OBJ: text, vertices then triangles (OBJ's indices are 1-based).
 void writeText(const TriangleMesh& mesh, const std::string& path, bool obj) {
@@ -55,7 +36,7 @@ void writeTriangleMesh(const TriangleMesh& mesh, const std::string& path) {
     if (!isMeshFileName(path)) throw InvalidInput("Cannot write '" + path + "': surfaces are written as .ply, .off or .obj.");
     const std::string ext = extensionOf(path);
     writeFileAtomically(path, [&](const std::string& temporary) {
-        if (ext == "ply") writePly(mesh, temporary);
+        if (ext == "ply") writeBinaryPly(temporary, mesh.vertices, &mesh.triangles);
         else writeText(mesh, temporary, ext == "obj");
     });
 }

@@ -2,10 +2,10 @@
 
 #include "pcskeleton/io/input_file.h"
 #include "pcskeleton/io/ply_reader.h"
+#include "pcskeleton/io/ply_writer.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <fstream>
 #include <iomanip>
 
@@ -116,19 +116,6 @@ PointList readObjVertices(InputFile& file) {
     return points;
 }
 
-void writePlyPoints(const PointList& points, const std::string& path) {
-    std::FILE* out = std::fopen(path.c_str(), "wb");
-    if (!out) throw InvalidInput("Cannot write '" + path + "': the file cannot be created.");
-    std::fprintf(out,
-                 "ply\nformat binary_little_endian 1.0\nelement vertex %zu\n"
-                 "property double x\nproperty double y\nproperty double z\nend_header\n",
-                 points.size());
-    bool ok = true;
-    for (const Point& p : points) ok = ok && std::fwrite(p.data(), sizeof(double), 3, out) == 3;
-    ok = std::fclose(out) == 0 && ok;
-    if (!ok) throw InvalidInput("Cannot write '" + path + "': writing failed (disk full?).");
-}
-
 void writeXyzPoints(const PointList& points, const std::string& path) {
     std::ofstream out(path);
     if (!out) throw InvalidInput("Cannot write '" + path + "': the file cannot be created.");
@@ -163,7 +150,7 @@ void writePointCloud(const PointList& points, const std::string& path) {
         throw InvalidInput("Cannot write '" + path + "': point sets are written as .ply or .xyz.");
     }
     writeFileAtomically(path, [&](const std::string& temporary) {
-        if (ext == "ply") writePlyPoints(points, temporary);
+        if (ext == "ply") writeBinaryPly(temporary, points);
         else writeXyzPoints(points, temporary);
     });
 }
