@@ -1,7 +1,5 @@
 #include "pcskeleton/curve_skeleton.h"
 
-#include "pcskeleton/contraction/point_denoising.h"
-
 #include "pcskeleton/analysis/node_recentering.h"
 #include "pcskeleton/analysis/skeleton_refinement.h"
 #include "pcskeleton/internal/stopwatch.h"
@@ -108,18 +106,13 @@ SkeletonResult skeletonFromContractedPoints(const PointList& input, const PointL
                 << ".";
         throw InvalidInput(message.str(), {Remedy::take(Step::ContractAgain)});
     }
-    const int k = contraction.neighbourCount;
-    const int neighbours = k > 0 ? k : defaultNeighbourCount(input.size());
-    const NormalizedCloud cloud = normalizeCloud(input, std::size_t(neighbours) + 1, contraction.outliers);
+    // The same cloud and 1-rings as the contraction's.
+    const ContractionStart start = prepareContraction(input, contraction, progressRange(progress, 0, 50));
+    const NormalizedCloud& cloud = start.cloud;
     SkeletonResult result;
-    Stopwatch stage;
-    // The same 1-rings as the contraction's: those of the same denoised copy.
-    const DenoisingChoice denoising = chooseDenoising(cloud.points, neighbours, contraction.denoisingPasses);
-    const OneRings rings = OneRings::compute(denoisedCopy(cloud.points, neighbours, denoising.passes), neighbours,
-                                             progressRange(progress, 0, 50));
-    result.contraction.denoisingPasses = denoising.passes;
-    result.contraction.surfaceNoise = denoising.surfaceNoise;
-    result.seconds.neighbourhoods = stage.seconds();
+    result.contraction.denoisingPasses = start.denoising.passes;
+    result.contraction.surfaceNoise = start.denoising.surfaceNoise;
+    result.seconds.neighbourhoods = start.neighbourhoodSeconds;
 
     rejectNonFinite(contracted, "contracted points", Remedy::take(Step::ContractAgain));
     PointList contractedUnique(cloud.points.size());
@@ -127,7 +120,7 @@ SkeletonResult skeletonFromContractedPoints(const PointList& input, const PointL
         if (!cloud.isOutlier(i)) contractedUnique[cloud.uniqueIndex[i]] = cloud.toNormalizedFrame(contracted[i]);
     }
     result.contraction.contracted = contracted;
-    thinAndEmbed(cloud, rings, contractedUnique, parameters, result, progressRange(progress, 50, 100));
+    thinAndEmbed(cloud, start.rings, contractedUnique, parameters, result, progressRange(progress, 50, 100));
     return result;
 }
 

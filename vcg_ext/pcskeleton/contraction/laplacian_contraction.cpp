@@ -1,6 +1,4 @@
 #include "pcskeleton/contraction/laplacian_contraction.h"
-#include "pcskeleton/contraction/point_denoising.h"
-
 
 #include "pcskeleton/internal/stopwatch.h"
 
@@ -55,18 +53,29 @@ std::string describe(StopReason reason) {
     return "unknown";
 }
 
+ContractionStart prepareContraction(const PointList& input, const ContractionParameters& parameters,
+                                    const ProgressCallback& progress) {
+    const int k = chooseNeighbourCount(parameters, input.size());
+    ContractionStart start;
+    start.cloud = normalizeCloud(input, static_cast<std::size_t>(k) + 1, parameters.outliers);
+    const Stopwatch stopwatch;
+    start.denoising = chooseDenoising(start.cloud.points, k, parameters.denoisingPasses);
+    start.positions = denoisedCopy(start.cloud.points, k, start.denoising.passes);
+    start.rings = OneRings::compute(start.positions, k, progress);
+    start.neighbourhoodSeconds = stopwatch.seconds();
+    return start;
+}
+
 LaplacianContraction::LaplacianContraction(const PointList& input, const ContractionParameters& parameters,
                                            const ProgressCallback& progress)
     : parameters_(parameters), solver_(parameters.solver) {
     checkParameters(parameters_);
-    const int k = chooseNeighbourCount(parameters_, input.size());
-    cloud_ = normalizeCloud(input, static_cast<std::size_t>(k) + 1, parameters_.outliers);
-
-    const Stopwatch stopwatch;
-    denoising_ = chooseDenoising(cloud_.points, k, parameters_.denoisingPasses);
-    positions_ = denoisedCopy(cloud_.points, k, denoising_.passes);
-    rings_ = OneRings::compute(positions_, k, progress);
-    neighbourhoodSeconds_ = stopwatch.seconds();
+    ContractionStart start = prepareContraction(input, parameters_, progress);
+    cloud_ = std::move(start.cloud);
+    denoising_ = start.denoising;
+    positions_ = std::move(start.positions);
+    rings_ = std::move(start.rings);
+    neighbourhoodSeconds_ = start.neighbourhoodSeconds;
 
     laplacian_ = std::make_unique<CotangentLaplacian>(rings_, parameters_.laplacianRowLimit);
     initialExtents_ = ringExtents(rings_, positions_);

@@ -72,6 +72,20 @@ struct ContractionResult {
     double surfaceNoise = -1;  // measured for the automatic choice, else -1
 };
 
+// What the contraction starts from: the normalised cloud (outliers set aside), the
+// denoising chosen for it, the starting positions (the denoised copy) and their 1-rings.
+// Thinning saved contracted points must rebuild exactly this, hence one function for both.
+// Of the parameters only k, the outlier parameters and the denoising passes are used.
+struct ContractionStart {
+    NormalizedCloud cloud;
+    DenoisingChoice denoising;
+    PointList positions;
+    OneRings rings;
+    double neighbourhoodSeconds = 0.0;  // denoising and 1-rings
+};
+ContractionStart prepareContraction(const PointList& input, const ContractionParameters& parameters,
+                                    const ProgressCallback& progress = {});
+
 class LaplacianContraction {
 public:
     // Validates the input (throws InvalidInput) and computes the 1-rings (step 1).
