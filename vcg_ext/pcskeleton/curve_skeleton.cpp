@@ -42,7 +42,7 @@ void thinAndEmbed(const NormalizedCloud& cloud, const OneRings& rings, const Poi
     const double nodeSpacing = radius / cloud.scale;
     const PointList points = inputPoints(cloud);
     RefinementReport refinement;
-    if (parameters.refine) refinement = refineSkeleton(result.skeleton, nodeSpacing);
+    if (parameters.refine) refinement = refineSkeleton(result.skeleton, points, nodeSpacing);
     // After refinement, whose merges renumber nodes: the moved nodes keep their numbers.
     RecenteringReport recentering;
     if (parameters.recentre) recentering = recentreOneSidedNodes(result.skeleton, points);

@@ -25,7 +25,7 @@ TEST(SkeletonRefinement, RemovesSpursCollapsesFalseLoopsAndMergesCloseJunctions)
     normalizeEdges(g.edges);
     ASSERT_EQ(invariantViolation(g), "");
 
-    const RefinementReport report = refineSkeleton(g, kSpacing);
+    const RefinementReport report = refineSkeleton(g, {}, kSpacing);
     EXPECT_EQ(invariantViolation(g), "");
     EXPECT_EQ(report.spursRemoved, 1) << describe(report);
     EXPECT_EQ(report.cyclesCollapsed, 1) << describe(report);
@@ -43,6 +43,6 @@ TEST(SkeletonRefinement, RemovesSpursCollapsesFalseLoopsAndMergesCloseJunctions)
 TEST(SkeletonRefinement, LeavesACleanSkeletonAlone) {
     SkeletonGraph ring = shapes::curveSkeleton(shapes::circle(Point::Zero(), 1.0, 24), 0.3);
     const SkeletonGraph before = ring;
-    EXPECT_FALSE(refineSkeleton(ring, kSpacing).changedAnything());
+    EXPECT_FALSE(refineSkeleton(ring, {}, kSpacing).changedAnything());
     EXPECT_EQ(ring.edges, before.edges);
 }

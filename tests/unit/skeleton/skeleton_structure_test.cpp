@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 using namespace pcskeleton;
 using namespace pcskeleton::graphs;
 
@@ -27,6 +29,72 @@ TEST(SkeletonStructure, AShortLimbInsideTheBodyIsASpurALongOneIsNot) {
     }
     EXPECT_EQ(spurs, 1);
     EXPECT_EQ(limbs, 1);
+}
+
+namespace {
+
+// Points on the wall of the chain's 0.2 tube (x from 0 to 1), each given its nearest node.
+PointList wallPoints(SkeletonGraph& g) {
+    PointList points;
+    for (int i = 0; i <= 100; ++i) {
+        for (int a = 0; a < 24; ++a) {
+            const double angle = 2.0 * M_PI * a / 24.0;
+            points.emplace_back(0.01 * i, 0.2 * std::cos(angle), 0.2 * std::sin(angle));
+        }
+    }
+    g.pointNode.assign(points.size(), -1);
+    for (std::size_t p = 0; p < points.size(); ++p) g.pointNode[p] = int(std::lround(points[p].x() / kSpacing));
+    return points;
+}
+
+// Gives each point whose nearest node is one of `nodes` (among those and the chain's) to it.
+void giveNearestPoints(SkeletonGraph& g, const PointList& points, const std::vector<int>& nodes) {
+    for (std::size_t p = 0; p < points.size(); ++p) {
+        double best = (points[p] - g.nodes[g.pointNode[p]]).norm();
+        for (int n : nodes) {
+            if ((points[p] - g.nodes[n]).norm() < best) best = (points[p] - g.nodes[n]).norm(), g.pointNode[p] = n;
+        }
+    }
+}
+
+}  // namespace
+
+TEST(SkeletonStructure, ALimbWhosePointsTheBoneAccountsForIsRedundant) {
+    // A limb sprouting sideways from node 5 towards the wall, 0.3 long (longer than the
+    // 0.2 radius, so not a short spur), owning wall points only: noise made it.
+    SkeletonGraph g = straightChain();
+    PointList points = wallPoints(g);
+    const int a = addNode(g, Point(0.5, 0.1, 0.1), 5);
+    const int tip = addNode(g, Point(0.5, 0.15, 0.15), a);
+    giveNearestPoints(g, points, {a, tip});
+    // A real leg: from node 8 out of the tube to 0.7 away, with its own thin tube of points.
+    int legTip = 8;
+    std::vector<int> leg;
+    for (int step = 1; step <= 7; ++step) leg.push_back(legTip = addNode(g, Point(0.8, 0, -0.1 * step), legTip));
+    for (int i = 20; i <= 70; ++i) {
+        for (int c = 0; c < 8; ++c) {
+            const double angle = 2.0 * M_PI * c / 8.0;
+            points.emplace_back(0.8 + 0.04 * std::cos(angle), 0.04 * std::sin(angle), -0.01 * i);
+            g.pointNode.push_back(8);
+        }
+    }
+    giveNearestPoints(g, points, leg);
+    for (int n : leg) g.radii[n] = 0.04;
+
+    int checked = 0;
+    for (const Limb& limb : tipLimbs(g)) {
+        if (limb.path.front() == tip) {
+            EXPECT_FALSE(isSpur(g, limb, kSpacing)) << "longer than the radius";
+            EXPECT_TRUE(isRedundantLimb(g, limb, points, kSpacing));
+            EXPECT_FALSE(isRedundantLimb(g, limb, {}, kSpacing)) << "no points, no judgement";
+            ++checked;
+        }
+        if (limb.path.front() == legTip) {
+            EXPECT_FALSE(isRedundantLimb(g, limb, points, kSpacing)) << "its points lie outside the body";
+            ++checked;
+        }
+    }
+    EXPECT_EQ(checked, 2);
 }
 
 TEST(SkeletonStructure, ALoopWithoutAHoleIsSpuriousARingIsNot) {

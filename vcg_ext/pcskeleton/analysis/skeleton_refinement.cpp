@@ -55,10 +55,12 @@ void mergeGroups(SkeletonGraph& skeleton, const std::vector<NodeGroup>& groups) 
     skeleton = std::move(merged);
 }
 
-int removeSpurs(SkeletonGraph& skeleton, double nodeSpacing) {
+int removeSpurs(SkeletonGraph& skeleton, const PointList& points, double nodeSpacing) {
     std::vector<NodeGroup> groups;
     for (const Limb& limb : tipLimbs(skeleton)) {
-        if (isSpur(skeleton, limb, nodeSpacing)) groups.push_back({limb.path, limb.path.back()});
+        if (isSpur(skeleton, limb, nodeSpacing) || isRedundantLimb(skeleton, limb, points, nodeSpacing)) {
+            groups.push_back({limb.path, limb.path.back()});
+        }
     }
     mergeGroups(skeleton, groups);
     return int(groups.size());
@@ -88,10 +90,10 @@ std::string describe(const RefinementReport& r) {
            counted(std::size_t(r.junctionsMerged), "pair") + " of close junctions";
 }
 
-RefinementReport refineSkeleton(SkeletonGraph& skeleton, double nodeSpacing) {
+RefinementReport refineSkeleton(SkeletonGraph& skeleton, const PointList& points, double nodeSpacing) {
     RefinementReport report;
     for (int pass = 0; pass < kMaxPasses; ++pass) {
-        const int spurs = removeSpurs(skeleton, nodeSpacing);
+        const int spurs = removeSpurs(skeleton, points, nodeSpacing);
         const int cycles = collapseSpuriousCycles(skeleton, nodeSpacing);
         const int junctions = mergeCloseJunctions(skeleton, nodeSpacing);
         report.spursRemoved += spurs;

@@ -1,8 +1,9 @@
-// Optional refinement of a computed skeleton, in the spirit of the authors' own
-// post-processing: the small artefacts noise leaves are removed. It changes the paper's
-// result, so it is off by default. Criteria: see skeleton_structure.h.
+// Refinement of a computed skeleton, in the spirit of the authors' own post-processing:
+// the small artefacts noise leaves are removed. Not the paper's step; on by default
+// (ThinningParameters::refine says why). Criteria: see skeleton_structure.h.
 //
-// 1. Spurs are absorbed into the junction they sprout from (which keeps its place).
+// 1. Spurs and redundant limbs are absorbed into the junction they sprout from (which
+//    keeps its place).
 // 2. Each spurious cycle (a loop without a hole) collapses to one node at its centre.
 // 3. Junctions joined by a path shorter than the node spacing merge into one node at the
 //    path's centre.
@@ -24,7 +25,8 @@ struct RefinementReport {
 // "removed 2 spurs, collapsed 1 small loop, merged 0 close junctions"
 std::string describe(const RefinementReport& report);
 
-// `nodeSpacing` is the thinning radius, in the skeleton's units.
-RefinementReport refineSkeleton(SkeletonGraph& skeleton, double nodeSpacing);
+// `nodeSpacing` is the thinning radius, in the skeleton's units; `points` its input points
+// (graph.pointNode's), or empty to keep redundant limbs.
+RefinementReport refineSkeleton(SkeletonGraph& skeleton, const PointList& points, double nodeSpacing);
 
 }  // namespace pcskeleton

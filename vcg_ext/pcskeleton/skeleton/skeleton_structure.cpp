@@ -9,6 +9,11 @@ namespace pcskeleton {
 
 namespace {
 
+// Share of a limb's points that must lie in the other nodes' tubes for the limb to be
+// redundant: a few points of a real limb can be close to the body (its base), and noise
+// puts a few of a redundant one outside.
+constexpr double kCoveredShare = 0.9;
+
 double boneLength(const SkeletonGraph& graph, int a, int b) { return (graph.nodes[a] - graph.nodes[b]).norm(); }
 
 // Walks from `from` into `next` and on through nodes of degree 2; returns the nodes passed,
@@ -79,6 +84,30 @@ std::vector<Limb> tipLimbs(const SkeletonGraph& graph) {
 bool isSpur(const SkeletonGraph& graph, const Limb& limb, double nodeSpacing) {
     if (!limb.atJunction) return false;  // a whole component, not a spur of something
     return limb.length < std::max(graph.radii[limb.path.back()], nodeSpacing);
+}
+
+bool isRedundantLimb(const SkeletonGraph& graph, const Limb& limb, const PointList& points, double nodeSpacing) {
+    if (!limb.atJunction || graph.pointNode.size() != points.size()) return false;
+    std::vector<bool> onLimb(graph.nodeCount(), false);
+    for (std::size_t i = 0; i + 1 < limb.path.size(); ++i) onLimb[limb.path[i]] = true;  // the junction stays
+    // Only nodes near the junction can hold the limb's points in their tubes.
+    const Point& junction = graph.nodes[limb.path.back()];
+    const double maxRadius = *std::max_element(graph.radii.begin(), graph.radii.end());
+    const double reach = limb.length + 2.0 * maxRadius + nodeSpacing;
+    std::vector<int> others;
+    for (std::size_t n = 0; n < graph.nodeCount(); ++n) {
+        if (!onLimb[n] && (graph.nodes[n] - junction).norm() <= reach) others.push_back(int(n));
+    }
+    std::size_t limbPoints = 0, covered = 0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const int node = graph.pointNode[i];
+        if (node < 0 || !onLimb[node]) continue;
+        ++limbPoints;
+        covered += std::any_of(others.begin(), others.end(), [&](int n) {
+            return (points[i] - graph.nodes[n]).norm() <= graph.radii[n] + nodeSpacing;
+        });
+    }
+    return limbPoints > 0 && double(covered) >= kCoveredShare * double(limbPoints);
 }
 
 std::vector<std::vector<int>> shortCycleBasis(const SkeletonGraph& graph) {

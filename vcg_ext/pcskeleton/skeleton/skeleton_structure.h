@@ -4,6 +4,10 @@
 // Criteria are geometric and relative to the skeleton itself, so they hold in any unit:
 // - a spur is a limb shorter than the radius at its junction (its tip is inside the body
 //   it sprouts from) or than the node spacing;
+// - a limb is redundant when the rest of the skeleton already accounts for its points:
+//   nearly all of them lie in the tube (radius plus node spacing) of a node off the limb.
+//   Noise, gaps and one-sided scans sprout such limbs from the side of a bone; a real limb,
+//   however short, has points beyond the body it leaves;
 // - a cycle is spurious when its hole is not there: the cycle's nodes lie closer to their
 //   centre than the tube around them is thick, or than the node spacing;
 // - two junctions are close when the bone path between them is shorter than the node
@@ -30,6 +34,10 @@ struct Limb {
 std::vector<Limb> tipLimbs(const SkeletonGraph& graph);
 
 bool isSpur(const SkeletonGraph& graph, const Limb& limb, double nodeSpacing);
+
+// `points` are the skeleton's input points (graph.pointNode's); false for a limb without
+// points or not at a junction.
+bool isRedundantLimb(const SkeletonGraph& graph, const Limb& limb, const PointList& points, double nodeSpacing);
 
 // One short cycle per independent cycle: for every bone outside a spanning forest, the
 // bone plus the shortest path (by length) between its ends that avoids it.
