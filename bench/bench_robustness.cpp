@@ -21,6 +21,8 @@
 //                                       refinement or tip extension) instead of the default
 //        bench_robustness [POINTS] --no-refine
 //                                       the default pipeline without refinement
+//        bench_robustness [POINTS] --no-link-limit
+//                                       the default pipeline without the stretched-link limit
 //        bench_robustness [POINTS] --outliers [ISOLATION CLUSTER LOCAL]
 //                                       outlier detection alone: surface points flagged,
 //                                       outliers found, per condition
@@ -440,7 +442,7 @@ int outlierDetection(const std::vector<Subject>& subjects, std::size_t n, const 
 }
 
 int main(int argc, char** argv) {
-    // bench_robustness [POINTS] [--paper] [--no-refine] | --outliers [ISOLATION CLUSTER LOCAL] | --write SHAPE CONDITION FILE
+    // bench_robustness [POINTS] [--paper] [--no-refine] [--no-link-limit] | --outliers [ISOLATION CLUSTER LOCAL] | --write SHAPE CONDITION FILE
     std::vector<std::string> args(argv + 1, argv + argc);
     const bool write = !args.empty() && args[0] == "--write" && args.size() >= 4;
     const bool outliers = std::find(args.begin(), args.end(), "--outliers") != args.end();
@@ -455,6 +457,7 @@ int main(int argc, char** argv) {
     if (std::find(args.begin(), args.end(), "--no-refine") != args.end()) pipeline.thinning.refine = false;
     if (std::find(args.begin(), args.end(), "--no-recentre") != args.end()) pipeline.thinning.recentre = false;
     if (std::find(args.begin(), args.end(), "--extend-tips") != args.end()) pipeline.thinning.extendTips = true;
+    if (std::find(args.begin(), args.end(), "--no-link-limit") != args.end()) pipeline.thinning.linkLimit = 0;
     std::vector<Subject> subjects = knownShapes();
     const std::vector<std::string> models{"elephant", "knot1", "eight", "hand"};
     const std::filesystem::path folder = extractModels(models);

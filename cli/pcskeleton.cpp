@@ -55,6 +55,7 @@ std::string optionOf(Parameter parameter) {
         case Parameter::OutlierLocalFactor: return "--outlier-local";
         case Parameter::OutlierClusterShare: return "--outlier-cluster";
         case Parameter::DenoisingPasses: return "--denoise";
+        case Parameter::LinkLimit: return "--link-limit";
         case Parameter::Resolution: return "--resolution";
         case Parameter::SmoothWeight: return "--smooth-weight";
         case Parameter::SurfaceWeight: return "--surface-weight";
@@ -96,9 +97,10 @@ void printHelp() {
         "Extracts the curve skeleton of a point cloud by Laplacian-based contraction\n"
         "(Cao et al., SMI 2010): contraction, thinning, embedding. The paper's parameters\n"
         "are the defaults; the steps it does not have (outlier detection, denoising,\n"
-        "re-centring, refinement, tip extension) are on by default because they measured\n"
-        "better on imperfect scans, and --paper turns them all off. Every length is\n"
-        "relative to the cloud's size: the same command works in millimetres or kilometres.\n"
+        "the stretched-link limit, re-centring, refinement, tip extension) are on by\n"
+        "default because they measured better on imperfect scans, and --paper turns them\n"
+        "all off. Every length is relative to the cloud's size: the same command works in\n"
+        "millimetres or kilometres.\n"
         "\n"
         "INPUT      point set: .ply (ascii or binary, either byte order), .off, .obj\n"
         "           (faces are ignored, so meshes and polygon soups work), .xyz/.txt/.pts\n"
@@ -146,6 +148,11 @@ void printHelp() {
         "  --radius R            thinning ball radius as a fraction of the bounding-box\n"
         "                        diagonal [%g]. Larger merges close parts and small loops;\n"
         "                        smaller keeps more detail and more noise.\n"
+        "  --link-limit X        1-ring neighbours whose contracted points ended more than X\n"
+        "                        radii (--radius) apart were pulled to different bones\n"
+        "                        (parts that touch, noise across a gap): they connect their\n"
+        "                        nodes only where nothing else does [%g]. Lower it if close\n"
+        "                        parts get false loops; 0 = every neighbour connects (paper)\n"
         "  --no-extend-tips      keep the tips where contraction left them (the paper's\n"
         "                        skeleton); by default each limb is extended to the end of\n"
         "                        its tip's points, since contraction shortens limbs\n"
@@ -176,6 +183,7 @@ void printHelp() {
         "                        0 never (the paper); 1-10 passes always\n"
         "  --paper               the paper's pipeline exactly: the same as --keep-outliers\n"
         "                        --denoise 0 --no-recentre --no-refine --no-extend-tips\n"
+        "                        --link-limit 0\n"
         "  --report FILE         also write the quality report to FILE\n"
         "  --force               replace output files that exist already (never the input)\n"
         "  --quiet               no progress and no summary on stderr\n"
@@ -190,7 +198,7 @@ void printHelp() {
         r.resolution, r.smoothWeight, r.surfaceWeight, r.skeletonWeight, r.outsideWeight, r.outsideRadii,
         c.neighbourCount, c.initialContractionWeight, c.initialAttractionWeight, c.contractionScale,
         c.maxContractionWeight, c.maxAttractionWeight, c.laplacianRowLimit, c.maxIterations, c.terminationThreshold,
-        t.sampleRadius, o.isolationFactor, o.localFactor, o.clusterShare, c.denoisingPasses,
+        t.sampleRadius, t.linkLimit, o.isolationFactor, o.localFactor, o.clusterShare, c.denoisingPasses,
         kPassesForNoisySurface, kNoisySurface);
 }
 
@@ -274,6 +282,7 @@ bool parseArguments(int argc, char** argv, Options& options) {
         {"--iterations", [&](const std::string& v) { c.maxIterations = parseInteger("--iterations", v); }},
         {"--threshold", [&](const std::string& v) { c.terminationThreshold = parseNumber("--threshold", v); }},
         {"--radius", [&](const std::string& v) { options.parameters.thinning.sampleRadius = parseNumber("--radius", v); }},
+        {"--link-limit", [&](const std::string& v) { options.parameters.thinning.linkLimit = parseNumber("--link-limit", v); }},
         {"--outlier-isolation", [&](const std::string& v) { c.outliers.isolationFactor = parseNumber("--outlier-isolation", v); }},
         {"--outlier-local", [&](const std::string& v) { c.outliers.localFactor = parseNumber("--outlier-local", v); }},
         {"--outlier-cluster", [&](const std::string& v) { c.outliers.clusterShare = parseNumber("--outlier-cluster", v); }},

@@ -118,6 +118,11 @@ void addThinningParameters(RichParameterList& list) {
         "Radius of the balls that sample the contracted points into skeleton nodes, as a fraction of the "
         "bounding-box diagonal (the paper's 0.02). Larger: fewer nodes, and parts or holes closer than this "
         "merge; smaller: more nodes, and noise may survive as short spurs or tiny loops."));
+    list.addParam(RichFloat("linkLimit", float(d.linkLimit), parameterLabel(Parameter::LinkLimit),
+        "Neighbouring points whose contracted positions ended more than this many node spacings apart were "
+        "pulled to different bones (parts that touch, noise across a gap): they connect their nodes only where "
+        "nothing else does, so they close no false loop. Lower it if close parts still get false loops; 0 lets "
+        "every neighbour pair connect, as in the paper."));
     list.addParam(RichBool("extendTips", d.extendTips, "Extend tips to the shape's ends",
         "Contraction pulls the ends of limbs inwards, so the skeleton stops short of them. This extends every "
         "limb (not the short spurs) along its direction to the farthest of its tip's points, with a new end node. "
@@ -148,6 +153,7 @@ pcskeleton::ContractionParameters contractionOfThinning(const RichParameterList&
 pcskeleton::ThinningParameters readThinningParameters(const RichParameterList& list) {
     pcskeleton::ThinningParameters p;
     p.sampleRadius = list.getFloat("sampleRadius");
+    p.linkLimit = list.getFloat("linkLimit");
     p.extendTips = list.getBool("extendTips");
     p.recentre = list.getBool("recentre");
     p.refine = list.getBool("refine");
@@ -372,8 +378,8 @@ void FilterPCSkeletonPlugin::initParameterSet(QAction* action, MeshDocument& md,
                 "Also adds the contracted points as a layer, e.g. to thin them again later with other settings "
                 "(Skeleton from Contracted Points)."));
             parameters.addParam(RichBool("paperPipeline", false, "The paper's pipeline only",
-                "Exactly the paper's steps: no outlier detection, denoising, re-centring, refinement or tip "
-                "extension, whatever is set above. For comparison with the paper and other implementations of it."));
+                "Exactly the paper's steps: no outlier detection, denoising, re-centring, refinement, tip "
+                "extension or stretched-link limit, whatever is set above. For comparison with the paper and other implementations of it."));
             break;
         case FP_SKELETON_FROM_CONTRACTED:
             parameters.addParam(RichMesh("sourceLayer", likelySourceOf(md, md.mm()), &md, "Original points",

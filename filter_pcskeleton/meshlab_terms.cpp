@@ -25,6 +25,7 @@ QString parameterLabel(Parameter parameter) {
         case Parameter::OutlierIsolation: return "Outlier isolation (spacings)";
         case Parameter::OutlierClusterShare: return "Outlier cluster share";
         case Parameter::DenoisingPasses: return "Denoising passes";
+        case Parameter::LinkLimit: return "Stretched-link limit (node spacings)";
     }
     return {};
 }

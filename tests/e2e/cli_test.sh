@@ -109,11 +109,13 @@ fine=$($GRAPH show knot.ply | sed 's/.*nodes.: \([0-9]*\).*/\1/')
 # --help documents every option with its default.
 "$PCSKELETON" --help >help.txt
 for option in --contracted --correspondence --k --wl --wh --sl --max-wl --max-wh --row-limit --iterations \
-              --threshold --radius --no-extend-tips --refine --no-refine --no-recentre --keep-outliers --outlier-isolation \
+              --threshold --radius --link-limit --no-extend-tips --refine --no-refine --no-recentre --keep-outliers --outlier-isolation \
               --outlier-local --outlier-cluster --denoise --paper --report --force --quiet; do
   grep -q -- "$option" help.txt || fail "--help does not document $option"
 done
 grep -q "\[0.02\]" help.txt || fail "--help does not give the radius default"
+grep -q "apart were pulled to different bones" help.txt && grep -q "\[4\]" help.txt \
+  || fail "--help does not explain --link-limit with its default"
 
 # Bad input: non-zero exit and a one-line reason; nothing written.
 expect_error() {  # exit code, text in the message, arguments...
@@ -139,6 +141,7 @@ expect_error 2 "unknown option" $M/knot.off -o out.ply --fast
 expect_error 1 "^pcskeleton: --radius must be a fraction" $M/knot.off -o out.ply --radius 2
 expect_error 1 "^pcskeleton: --sl must be at least 1" $M/knot.off -o out.ply --sl 0.5
 expect_error 1 "^pcskeleton: --denoise must be between 0 (off) and 10, or -1" $M/knot.off -o out.ply --denoise 11
+expect_error 1 "^pcskeleton: --link-limit must be 0 (every link connects" $M/knot.off -o out.ply --link-limit -1
 for i in $(seq 0 11); do echo "$((i % 4)) $((i / 4)) $((i % 3))"; done >few.xyz
 expect_error 1 "at least 21 are needed.*Lower --k" few.xyz -o out.ply --k 20
 [ ! -e out.ply ] || fail "a failed run wrote out.ply"

@@ -73,8 +73,8 @@ click 160 386         # Point Set
 click 640 436 1.5     # Compute Curve Skeleton (Laplacian Contraction)
 wait_window "Compute Curve Skeleton" 10
 shot skeleton-dialog
-click 324 861 5       # Apply
-click 112 861         # Close
+click 324 892 5       # Apply
+click 112 892         # Close
 shot skeleton-layer
 click 120 10          # Filters
 click 160 386         # Point Set

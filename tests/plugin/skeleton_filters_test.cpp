@@ -286,6 +286,13 @@ TEST_F(SkeletonFilterTest, ARefusedParameterIsNamedByItsDialogLabel) {
     p.setValue("contractionScale", FloatValue(0.5f));
     ASSERT_FALSE(apply(a, p));
     EXPECT_EQ(plugin->errorMsg().toStdString(), "'Contraction scale s_L' must be at least 1.");
+
+    p = defaults(a);
+    p.setValue("linkLimit", FloatValue(-1.0f));
+    ASSERT_FALSE(apply(a, p));
+    EXPECT_EQ(plugin->errorMsg().toStdString(),
+              "'Stretched-link limit (node spacings)' must be 0 (every link connects, the paper's rule) or a positive "
+              "number of node spacings.");
 }
 
 TEST_F(SkeletonFilterTest, TipExtensionAndRefinementAreParametersWithHelp) {
@@ -296,6 +303,9 @@ TEST_F(SkeletonFilterTest, TipExtensionAndRefinementAreParametersWithHelp) {
     EXPECT_TRUE(parameters.getBool("extendTips"));
     EXPECT_TRUE(parameters.getBool("refine")) << "on by default since the robustness suite showed it helps";
     EXPECT_FALSE(parameters.getParameterByName("refine").fieldDescription().isEmpty());
+    ASSERT_TRUE(parameters.hasParameter("linkLimit"));
+    EXPECT_FLOAT_EQ(parameters.getFloat("linkLimit"), 4.0f);
+    EXPECT_FALSE(parameters.getParameterByName("linkLimit").fieldDescription().isEmpty());
 
     // Without extension, a capped tube's skeleton is shorter than with it.
     auto length = [&](bool extend) {

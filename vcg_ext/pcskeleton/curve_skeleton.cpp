@@ -7,6 +7,8 @@
 #include "pcskeleton/skeleton/skeleton_thinning.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace pcskeleton {
@@ -31,7 +33,9 @@ void thinAndEmbed(const NormalizedCloud& cloud, const OneRings& rings, const Poi
     checkThinningParameters(parameters);
     Stopwatch stage;
     const double radius = parameters.sampleRadius * cloud.diagonal;
-    const ThinnedGraph thinned = thinContractedPoints(contracted, rings, radius, progress);
+    const double maxLinkLength = parameters.linkLimit > 0 ? parameters.linkLimit * radius
+                                                          : std::numeric_limits<double>::infinity();
+    const ThinnedGraph thinned = thinContractedPoints(cloud.points, contracted, rings, radius, maxLinkLength, progress);
     result.seconds.thinning = stage.seconds();
 
     stage.restart();
@@ -70,6 +74,10 @@ void thinAndEmbed(const NormalizedCloud& cloud, const OneRings& rings, const Poi
 }  // namespace
 
 void checkThinningParameters(const ThinningParameters& parameters) {
+    if (!(parameters.linkLimit >= 0.0 && std::isfinite(parameters.linkLimit))) {
+        throw InvalidInput(Problem::aboutParameter(
+            Parameter::LinkLimit, "must be 0 (every link connects, the paper's rule) or a positive number of node spacings."));
+    }
     if (!(parameters.sampleRadius > 0.0 && parameters.sampleRadius < 1.0)) {
         std::ostringstream requirement;
         requirement << "must be a fraction of the bounding-box diagonal between 0 and 1 (the paper uses 0.02); got "

@@ -5,6 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 using namespace pcskeleton;
 
 TEST(Thinning, FarthestPointSamplingCoversEveryPointWithinTheRadius) {
@@ -43,7 +47,33 @@ TEST(Thinning, ConnectionsFollowOneRings) {
     const OneRings rings = OneRings::compute(points, 10);
     std::vector<int> owner(points.size());
     for (std::size_t i = 0; i < points.size(); ++i) owner[i] = points[i].z() < 0.5 ? 0 : 1;
-    const std::vector<Edge> edges = connectByOneRings(rings, owner);
+    const std::vector<Edge> edges = connectByOneRings(rings, owner, points, points, std::numeric_limits<double>::infinity());
     ASSERT_EQ(edges.size(), 1u);
     EXPECT_EQ(edges[0], (Edge{0, 1}));
+}
+
+TEST(Thinning, StretchedLinksConnectOnlyWhatNothingElseConnects) {
+    // A tube cut lengthwise into three 120-degree sectors: each sector's points are 1-ring
+    // neighbours of both others', so the three samples form a triangle.
+    const PointList points = shapes::cylinder(3000, 0.1, 1.0, false);
+    const OneRings rings = OneRings::compute(points, 10);
+    std::vector<int> owner(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const double angle = std::atan2(points[i].y(), points[i].x()) + M_PI;  // 0 .. 2 pi
+        owner[i] = std::min(2, int(angle / (2.0 * M_PI / 3.0)));
+    }
+    const double infinity = std::numeric_limits<double>::infinity();
+    EXPECT_EQ(connectByOneRings(rings, owner, points, points, infinity).size(), 3u) << "the paper's rule: a triangle";
+
+    // "Contraction" pulls sector 2 far away: its links to sectors 0 and 1 are stretched.
+    PointList contracted = points;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        if (owner[i] == 2) contracted[i] += Point(5.0, 0, 0);
+    }
+    const std::vector<Edge> limited = connectByOneRings(rings, owner, points, contracted, 1.0);
+    ASSERT_EQ(limited.size(), 2u) << "one stretched link keeps sector 2 connected, the other would close a cycle";
+    EXPECT_TRUE(hasEdge(limited, 0, 1));
+    EXPECT_EQ(analyseTopology(3, limited).components, 1);
+    EXPECT_EQ(analyseTopology(3, limited).cycles, 0);
+    EXPECT_EQ(connectByOneRings(rings, owner, points, contracted, infinity).size(), 3u);
 }

@@ -35,6 +35,7 @@ std::string libraryParameterName(Parameter p) {
         case Parameter::OutlierLocalFactor: return "the outlier local factor";
         case Parameter::OutlierClusterShare: return "the outlier cluster share";
         case Parameter::DenoisingPasses: return "the denoising passes";
+        case Parameter::LinkLimit: return "the stretched-link limit";
     }
     return "a parameter";
 }

@@ -36,6 +36,7 @@ enum class Parameter {
     OutlierLocalFactor,
     OutlierClusterShare,
     DenoisingPasses,
+    LinkLimit,
 };
 
 // Steps the user takes outside the computation that found the problem.
