@@ -45,11 +45,18 @@ void thinAndEmbed(const NormalizedCloud& cloud, const OneRings& rings, const Poi
     stage.restart();
     const double nodeSpacing = radius / cloud.scale;
     const PointList points = inputPoints(cloud);
-    RefinementReport refinement;
-    if (parameters.refine) refinement = refineSkeleton(result.skeleton, points, nodeSpacing);
-    // After refinement, whose merges renumber nodes: the moved nodes keep their numbers.
+    // Re-centring first: refinement judges limbs by the nodes' tubes, which on one-sided
+    // parts are only right once the nodes are on the axis (bench_robustness: the ring
+    // scanned from one view loses its spur).
     RecenteringReport recentering;
     if (parameters.recentre) recentering = recentreOneSidedNodes(result.skeleton, points);
+    RefinementReport refinement;
+    if (parameters.refine) {
+        refinement = refineSkeleton(result.skeleton, points, nodeSpacing);
+        for (int& node : recentering.nodes) node = refinement.nodeMap[node];
+        std::sort(recentering.nodes.begin(), recentering.nodes.end());
+        recentering.nodes.erase(std::unique(recentering.nodes.begin(), recentering.nodes.end()), recentering.nodes.end());
+    }
     TipExtensionReport extension;
     if (parameters.extendTips) extension = extendTips(result.skeleton, points, nodeSpacing);
     result.quality = assessSkeleton(result.skeleton, cloud, rings, contracted, nodeSpacing);

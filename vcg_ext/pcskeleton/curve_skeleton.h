@@ -33,7 +33,7 @@ struct ThinningParameters {
     double linkLimit = 4.0;
     // Remove spurs, redundant limbs and loops without a hole, merge close junctions
     // (skeleton_refinement.h). On by default: on the robustness suite (bench_robustness
-    // --no-refine against the default) it turns 5 wrong topologies of 132 right (spurs from
+    // --no-refine against the default) it turns 6 wrong topologies of 132 right (spurs from
     // misaligned and one-view scans) and none wrong.
     bool refine = true;
     // Move nodes whose points cover one side of their bone only (one-view scans, holes) to

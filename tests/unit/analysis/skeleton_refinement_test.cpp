@@ -1,4 +1,4 @@
-// Optional refinement on hand-made graphs whose flaws are known, and on a clean ring.
+// Refinement on hand-made graphs whose flaws are known, and on a clean ring.
 #include <pcskeleton/analysis/skeleton_refinement.h>
 #include "support/hand_made_graphs.h"
 #include "support/sampled_shapes.h"
@@ -38,6 +38,13 @@ TEST(SkeletonRefinement, RemovesSpursCollapsesFalseLoopsAndMergesCloseJunctions)
     const int spurPointNode = g.pointNode.back();
     ASSERT_GE(spurPointNode, 0);
     EXPECT_TRUE(g.nodes[spurPointNode].isApprox(Point(0.2, 0, 0)));
+    // The node map follows every node: the spur to its junction, untouched ones to themselves.
+    ASSERT_EQ(report.nodeMap.size(), std::size_t(down) + 1);
+    EXPECT_EQ(report.nodeMap[spur], report.nodeMap[2]);
+    EXPECT_TRUE(g.nodes[report.nodeMap[2]].isApprox(Point(0.2, 0, 0)));
+    EXPECT_TRUE(g.nodes[report.nodeMap[10]].isApprox(Point(1.0, 0, 0)));
+    EXPECT_EQ(report.nodeMap[a], report.nodeMap[c]) << "the false loop became one node";
+    for (int node : report.nodeMap) EXPECT_TRUE(node >= 0 && node < int(g.nodeCount()));
 }
 
 TEST(SkeletonRefinement, LeavesACleanSkeletonAlone) {

@@ -14,7 +14,7 @@ namespace pcskeleton {
 
 struct RecenteringReport {
     int recentredNodes = 0;
-    std::vector<int> nodes;  // the nodes moved
+    std::vector<int> nodes;  // the nodes moved (numbered as in the finished skeleton)
     double meanShift = 0.0;  // input units
 };
 

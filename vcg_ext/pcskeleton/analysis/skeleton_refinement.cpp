@@ -4,6 +4,8 @@
 #include "pcskeleton/internal/disjoint_sets.h"
 #include "pcskeleton/skeleton/skeleton_structure.h"
 
+#include <numeric>
+
 
 namespace pcskeleton {
 
@@ -13,13 +15,14 @@ constexpr int kMaxPasses = 10;
 
 // Merges each group of nodes into one; groups sharing a node merge together. The merged
 // node takes the position and radius of the group's `keep` node when it has one, else the
-// centroid and mean radius of its nodes. Nodes in no group stay as they are.
+// centroid and mean radius of its nodes. Nodes in no group stay as they are. `nodeMap`
+// (node of some earlier skeleton -> node of this one) is updated to the merged skeleton.
 struct NodeGroup {
     std::vector<int> nodes;
     int keep = -1;
 };
 
-void mergeGroups(SkeletonGraph& skeleton, const std::vector<NodeGroup>& groups) {
+void mergeGroups(SkeletonGraph& skeleton, const std::vector<NodeGroup>& groups, std::vector<int>& nodeMap) {
     const std::size_t nodeCount = skeleton.nodeCount();
     DisjointSets sets(nodeCount);
     for (const NodeGroup& group : groups) {
@@ -53,33 +56,31 @@ void mergeGroups(SkeletonGraph& skeleton, const std::vector<NodeGroup>& groups) 
     merged.pointNode.reserve(skeleton.pointNode.size());
     for (int node : skeleton.pointNode) merged.pointNode.push_back(node < 0 ? -1 : newIndex[node]);
     skeleton = std::move(merged);
+    for (int& node : nodeMap) node = newIndex[node];
 }
 
-int removeSpurs(SkeletonGraph& skeleton, const PointList& points, double nodeSpacing) {
+std::vector<NodeGroup> spurGroups(const SkeletonGraph& skeleton, const PointList& points, double nodeSpacing) {
     std::vector<NodeGroup> groups;
     for (const Limb& limb : tipLimbs(skeleton)) {
         if (isSpur(skeleton, limb, nodeSpacing) || isRedundantLimb(skeleton, limb, points, nodeSpacing)) {
             groups.push_back({limb.path, limb.path.back()});
         }
     }
-    mergeGroups(skeleton, groups);
-    return int(groups.size());
+    return groups;
 }
 
-int collapseSpuriousCycles(SkeletonGraph& skeleton, double nodeSpacing) {
+std::vector<NodeGroup> spuriousCycleGroups(const SkeletonGraph& skeleton, double nodeSpacing) {
     std::vector<NodeGroup> groups;
     for (std::vector<int>& cycle : shortCycleBasis(skeleton)) {
         if (isSpuriousCycle(skeleton, cycle, nodeSpacing)) groups.push_back({std::move(cycle), -1});
     }
-    mergeGroups(skeleton, groups);
-    return int(groups.size());
+    return groups;
 }
 
-int mergeCloseJunctions(SkeletonGraph& skeleton, double nodeSpacing) {
+std::vector<NodeGroup> closeJunctionGroups(const SkeletonGraph& skeleton, double nodeSpacing) {
     std::vector<NodeGroup> groups;
     for (std::vector<int>& path : closeJunctionPaths(skeleton, nodeSpacing)) groups.push_back({std::move(path), -1});
-    mergeGroups(skeleton, groups);
-    return int(groups.size());
+    return groups;
 }
 
 }  // namespace
@@ -92,10 +93,17 @@ std::string describe(const RefinementReport& r) {
 
 RefinementReport refineSkeleton(SkeletonGraph& skeleton, const PointList& points, double nodeSpacing) {
     RefinementReport report;
+    report.nodeMap.resize(skeleton.nodeCount());
+    std::iota(report.nodeMap.begin(), report.nodeMap.end(), 0);
+    // Each step merges before the next looks: it must see the graph the others left.
+    auto merge = [&](const std::vector<NodeGroup>& groups) {
+        mergeGroups(skeleton, groups, report.nodeMap);
+        return int(groups.size());
+    };
     for (int pass = 0; pass < kMaxPasses; ++pass) {
-        const int spurs = removeSpurs(skeleton, points, nodeSpacing);
-        const int cycles = collapseSpuriousCycles(skeleton, nodeSpacing);
-        const int junctions = mergeCloseJunctions(skeleton, nodeSpacing);
+        const int spurs = merge(spurGroups(skeleton, points, nodeSpacing));
+        const int cycles = merge(spuriousCycleGroups(skeleton, nodeSpacing));
+        const int junctions = merge(closeJunctionGroups(skeleton, nodeSpacing));
         report.spursRemoved += spurs;
         report.cyclesCollapsed += cycles;
         report.junctionsMerged += junctions;

@@ -14,11 +14,13 @@
 #include "pcskeleton/skeleton/skeleton_graph.h"
 
 #include <string>
+#include <vector>
 
 namespace pcskeleton {
 
 struct RefinementReport {
     int spursRemoved = 0, cyclesCollapsed = 0, junctionsMerged = 0;
+    std::vector<int> nodeMap;  // per node of the skeleton given: the node it became
     bool changedAnything() const { return spursRemoved + cyclesCollapsed + junctionsMerged > 0; }
 };
 
