@@ -81,16 +81,17 @@ TEST(SkeletonStructure, ALimbWhosePointsTheBoneAccountsForIsRedundant) {
     giveNearestPoints(g, points, leg);
     for (int n : leg) g.radii[n] = 0.04;
 
+    const std::vector<std::vector<int>> nodePoints = pointsOfNodes(g);
     int checked = 0;
     for (const Limb& limb : tipLimbs(g)) {
         if (limb.path.front() == tip) {
             EXPECT_FALSE(isSpur(g, limb, kSpacing)) << "longer than the radius";
-            EXPECT_TRUE(isRedundantLimb(g, limb, points, kSpacing));
-            EXPECT_FALSE(isRedundantLimb(g, limb, {}, kSpacing)) << "no points, no judgement";
+            EXPECT_TRUE(isRedundantLimb(g, limb, points, nodePoints, kSpacing));
+            EXPECT_FALSE(isRedundantLimb(g, limb, {}, nodePoints, kSpacing)) << "no points, no judgement";
             ++checked;
         }
         if (limb.path.front() == legTip) {
-            EXPECT_FALSE(isRedundantLimb(g, limb, points, kSpacing)) << "its points lie outside the body";
+            EXPECT_FALSE(isRedundantLimb(g, limb, points, nodePoints, kSpacing)) << "its points lie outside the body";
             ++checked;
         }
     }

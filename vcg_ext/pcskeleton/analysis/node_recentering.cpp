@@ -43,10 +43,7 @@ bool fitCircle(const std::vector<Eigen::Vector2d>& q, Circle& circle) {
 RecenteringReport recentreOneSidedNodes(SkeletonGraph& skeleton, const PointList& points) {
     RecenteringReport report;
     const std::vector<std::vector<int>> adjacent = adjacencyLists(skeleton.nodeCount(), skeleton.edges);
-    std::vector<std::vector<int>> members(skeleton.nodeCount());
-    for (std::size_t i = 0; i < skeleton.pointNode.size(); ++i) {
-        if (skeleton.pointNode[i] >= 0) members[skeleton.pointNode[i]].push_back(int(i));
-    }
+    const std::vector<std::vector<int>> members = pointsOfNodes(skeleton);
     const PointList before = skeleton.nodes;
     double shifts = 0.0;
     for (std::size_t n = 0; n < skeleton.nodeCount(); ++n) {

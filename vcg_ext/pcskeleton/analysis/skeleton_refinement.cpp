@@ -61,8 +61,9 @@ void mergeGroups(SkeletonGraph& skeleton, const std::vector<NodeGroup>& groups, 
 
 std::vector<NodeGroup> spurGroups(const SkeletonGraph& skeleton, const PointList& points, double nodeSpacing) {
     std::vector<NodeGroup> groups;
+    const std::vector<std::vector<int>> nodePoints = pointsOfNodes(skeleton);
     for (const Limb& limb : tipLimbs(skeleton)) {
-        if (isSpur(skeleton, limb, nodeSpacing) || isRedundantLimb(skeleton, limb, points, nodeSpacing)) {
+        if (isSpur(skeleton, limb, nodeSpacing) || isRedundantLimb(skeleton, limb, points, nodePoints, nodeSpacing)) {
             groups.push_back({limb.path, limb.path.back()});
         }
     }

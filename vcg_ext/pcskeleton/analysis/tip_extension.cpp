@@ -27,10 +27,7 @@ Point tipDirection(const SkeletonGraph& skeleton, const Limb& limb, double nodeS
 }  // namespace
 
 TipExtensionReport extendTips(SkeletonGraph& skeleton, const PointList& points, double nodeSpacing) {
-    std::vector<std::vector<int>> pointsOf(skeleton.nodeCount());
-    for (std::size_t i = 0; i < skeleton.pointNode.size(); ++i) {
-        if (skeleton.pointNode[i] >= 0) pointsOf[skeleton.pointNode[i]].push_back(int(i));
-    }
+    const std::vector<std::vector<int>> pointsOf = pointsOfNodes(skeleton);
     TipExtensionReport report;
     for (const Limb& limb : tipLimbs(skeleton)) {
         const int tip = limb.path.front();

@@ -48,6 +48,14 @@ std::string describe(const SkeletonTopology& t) {
            counted(std::size_t(t.tips), "tip") + ", " + counted(std::size_t(t.junctions), "junction");
 }
 
+std::vector<std::vector<int>> pointsOfNodes(const SkeletonGraph& graph) {
+    std::vector<std::vector<int>> points(graph.nodeCount());
+    for (std::size_t i = 0; i < graph.pointNode.size(); ++i) {
+        if (graph.pointNode[i] >= 0) points[graph.pointNode[i]].push_back(int(i));
+    }
+    return points;
+}
+
 void normalizeEdges(std::vector<Edge>& edges) {
     for (Edge& e : edges) {
         if (e[0] > e[1]) std::swap(e[0], e[1]);

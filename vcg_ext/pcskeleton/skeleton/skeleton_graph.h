@@ -46,6 +46,9 @@ std::vector<int> nodeDegrees(std::size_t nodeCount, const std::vector<Edge>& edg
 // Each node's neighbours along the bones.
 std::vector<std::vector<int>> adjacencyLists(std::size_t nodeCount, const std::vector<Edge>& edges);
 
+// Each node's points: the indices i with graph.pointNode[i] == node, ascending.
+std::vector<std::vector<int>> pointsOfNodes(const SkeletonGraph& graph);
+
 // Sorts the edges, orders each edge's ends, drops duplicates and self-loops.
 void normalizeEdges(std::vector<Edge>& edges);
 

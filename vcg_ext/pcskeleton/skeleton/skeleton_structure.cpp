@@ -86,7 +86,8 @@ bool isSpur(const SkeletonGraph& graph, const Limb& limb, double nodeSpacing) {
     return limb.length < std::max(graph.radii[limb.path.back()], nodeSpacing);
 }
 
-bool isRedundantLimb(const SkeletonGraph& graph, const Limb& limb, const PointList& points, double nodeSpacing) {
+bool isRedundantLimb(const SkeletonGraph& graph, const Limb& limb, const PointList& points,
+                     const std::vector<std::vector<int>>& nodePoints, double nodeSpacing) {
     if (!limb.atJunction || graph.pointNode.size() != points.size()) return false;
     std::vector<bool> onLimb(graph.nodeCount(), false);
     for (std::size_t i = 0; i + 1 < limb.path.size(); ++i) onLimb[limb.path[i]] = true;  // the junction stays
@@ -98,16 +99,21 @@ bool isRedundantLimb(const SkeletonGraph& graph, const Limb& limb, const PointLi
     for (std::size_t n = 0; n < graph.nodeCount(); ++n) {
         if (!onLimb[n] && (graph.nodes[n] - junction).norm() <= reach) others.push_back(int(n));
     }
-    std::size_t limbPoints = 0, covered = 0;
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        const int node = graph.pointNode[i];
-        if (node < 0 || !onLimb[node]) continue;
-        ++limbPoints;
-        covered += std::any_of(others.begin(), others.end(), [&](int n) {
-            return (points[i] - graph.nodes[n]).norm() <= graph.radii[n] + nodeSpacing;
-        });
+    std::size_t limbPoints = 0;
+    for (std::size_t i = 0; i + 1 < limb.path.size(); ++i) limbPoints += nodePoints[limb.path[i]].size();
+    if (limbPoints == 0) return false;
+    // A real limb is usually told after a few of its points: stop once too many are outside.
+    const double allowedOutside = (1.0 - kCoveredShare) * double(limbPoints);
+    std::size_t outside = 0;
+    for (std::size_t i = 0; i + 1 < limb.path.size(); ++i) {
+        for (int p : nodePoints[limb.path[i]]) {
+            const bool covered = std::any_of(others.begin(), others.end(), [&](int n) {
+                return (points[p] - graph.nodes[n]).norm() <= graph.radii[n] + nodeSpacing;
+            });
+            if (!covered && double(++outside) > allowedOutside) return false;
+        }
     }
-    return limbPoints > 0 && double(covered) >= kCoveredShare * double(limbPoints);
+    return true;
 }
 
 std::vector<std::vector<int>> shortCycleBasis(const SkeletonGraph& graph) {

@@ -35,9 +35,10 @@ std::vector<Limb> tipLimbs(const SkeletonGraph& graph);
 
 bool isSpur(const SkeletonGraph& graph, const Limb& limb, double nodeSpacing);
 
-// `points` are the skeleton's input points (graph.pointNode's); false for a limb without
-// points or not at a junction.
-bool isRedundantLimb(const SkeletonGraph& graph, const Limb& limb, const PointList& points, double nodeSpacing);
+// `points` are the skeleton's input points (graph.pointNode's), `nodePoints` their lists
+// per node (pointsOfNodes); false for a limb without points or not at a junction.
+bool isRedundantLimb(const SkeletonGraph& graph, const Limb& limb, const PointList& points,
+                     const std::vector<std::vector<int>>& nodePoints, double nodeSpacing);
 
 // One short cycle per independent cycle: for every bone outside a spanning forest, the
 // bone plus the shortest path (by length) between its ends that avoids it.
