@@ -172,7 +172,8 @@ std::vector<Subject> knownShapes() {
         for (double side : {-0.15, 0.15}) animal.push_back({{{Point(x, side, 0), Point(x, side, -1.0)}}, 0.045});
     }
     subjects.push_back(tubeSubject("thin legs, thick body", animal, 0, 6));
-    // Two parallel tubes whose surfaces are 0.06 apart (three node spacings): two parts.
+    // Two parallel tubes (axes 0.28 apart, radius 0.08) whose surfaces are 0.12 apart, about
+    // 3.6 node spacings: two parts.
     subjects.push_back(tubeSubject("two close tubes",
                                    {{{{Point(-0.14, 0, 0), Point(-0.14, 0, 1.6)}}, 0.08},
                                     {{{Point(0.14, 0, 0), Point(0.14, 0, 1.6)}}, 0.08}},
