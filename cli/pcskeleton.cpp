@@ -16,6 +16,7 @@
 #include <map>
 #include <string>
 #include <unistd.h>
+#include <utility>
 
 using namespace pcskeleton;
 
@@ -180,7 +181,7 @@ void printHelp() {
         "                        neighbours; the nodes still sit among the points as given.\n"
         "                        [%d] = automatic: %d passes if the cloud is noisy (its\n"
         "                        surface noise, in the report, above %g), none if clean;\n"
-        "                        0 never (the paper); 1-10 passes always\n"
+        "                        0 never (the paper); 1-%d passes always\n"
         "  --paper               the paper's pipeline exactly: the same as --keep-outliers\n"
         "                        --denoise 0 --no-recentre --no-refine --no-extend-tips\n"
         "                        --link-limit 0\n"
@@ -199,7 +200,7 @@ void printHelp() {
         c.neighbourCount, c.initialContractionWeight, c.initialAttractionWeight, c.contractionScale,
         c.maxContractionWeight, c.maxAttractionWeight, c.laplacianRowLimit, c.maxIterations, c.terminationThreshold,
         t.sampleRadius, t.linkLimit, o.isolationFactor, o.localFactor, o.clusterShare, c.denoisingPasses,
-        kPassesForNoisySurface, kNoisySurface);
+        kPassesForNoisySurface, kNoisySurface, kMaximumDenoisingPasses);
 }
 
 double parseNumber(const std::string& option, const std::string& text) {
@@ -373,7 +374,7 @@ int main(int argc, char** argv) {
         if (!options.skeleton.empty()) {
             skeleton = readSkeleton(options.skeleton);
         } else {
-            const SkeletonResult result = computeCurveSkeleton(points, options.parameters, progress);
+            SkeletonResult result = computeCurveSkeleton(points, options.parameters, progress);
             if (showProgress) std::fprintf(stderr, "\r%-46s\r", "");
             writeSkeleton(result.skeleton, options.output);
             if (!options.contracted.empty()) writePointCloud(result.contraction.contracted, options.contracted);
@@ -389,7 +390,7 @@ int main(int argc, char** argv) {
                              result.contraction.iterations.size(), describe(result.contraction.stopReason).c_str(),
                              s.neighbourhoods, s.contraction, s.thinning, s.embedding, s.finishing, report.c_str());
             }
-            skeleton = result.skeleton;
+            skeleton = std::move(result.skeleton);
         }
         if (!options.surface.empty()) {
             const Reconstruction surface = reconstructFromSkeleton(points, skeleton, options.reconstruction, progress);

@@ -54,7 +54,7 @@ void addInputCleaningParameters(RichParameterList& list) {
         "they are. Noise and misaligned scans then leave far fewer spurs and false loops. -1 = automatic: "
         + QString::number(pcskeleton::kPassesForNoisySurface) + " passes if the cloud is noisy (surface noise above "
         + QString::number(pcskeleton::kNoisySurface) + ", given in the log), none if it is clean; 0 = never, as "
-        "the paper; 1 to 10 passes always."));
+        "the paper; 1 to " + QString::number(pcskeleton::kMaximumDenoisingPasses) + " passes always."));
 }
 
 void readInputCleaning(const RichParameterList& list, pcskeleton::ContractionParameters& p) {

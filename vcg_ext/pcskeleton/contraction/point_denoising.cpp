@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace pcskeleton {
 
@@ -77,7 +78,8 @@ DenoisingChoice chooseDenoising(const PointList& points, int neighbours, int req
     }
     if (requested < 0 || requested > kMaximumDenoisingPasses) {
         throw InvalidInput(Problem::aboutParameter(
-            Parameter::DenoisingPasses, "must be between 0 (off) and 10, or -1 (automatic: only noisy clouds)."));
+            Parameter::DenoisingPasses, "must be between 0 (off) and " + std::to_string(kMaximumDenoisingPasses) +
+                                            ", or -1 (automatic: only noisy clouds)."));
     }
     return {requested, -1.0};
 }
