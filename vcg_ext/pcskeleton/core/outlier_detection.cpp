@@ -46,13 +46,15 @@ std::vector<char> findOutliers(const PointList& points, const OutlierParameters&
     std::vector<int> neighbours(n * kNeighbours);
     auto row = [&](std::size_t i) { return neighbours.begin() + std::ptrdiff_t(i * kNeighbours); };
     std::vector<double> kthDistance(n);
+    const std::vector<std::size_t>& order = index.spatialOrder();
 #pragma omp parallel
     {
         std::vector<int> found;
 #pragma omp for schedule(static)
-        for (long i = 0; i < long(n); ++i) {
+        for (long r = 0; r < long(n); ++r) {
+            const std::size_t i = order[std::size_t(r)];
             index.nearest(points[i], kNeighbours + 1, found);
-            std::copy(found.begin() + 1, found.end(), row(std::size_t(i)));
+            std::copy(found.begin() + 1, found.end(), row(i));
             kthDistance[i] = (points[found.back()] - points[i]).norm();
         }
     }
