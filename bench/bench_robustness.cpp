@@ -23,6 +23,9 @@
 //                                       the default pipeline without refinement
 //        bench_robustness [POINTS] --no-link-limit
 //                                       the default pipeline without the stretched-link limit
+//        bench_robustness [POINTS] --full-resolution | --contracted-points N
+//                                       every point contracted, or at most N (the
+//                                       multi-resolution pipeline's subsample; default 20000)
 //        bench_robustness [POINTS] --outliers [ISOLATION CLUSTER LOCAL]
 //                                       outlier detection alone: surface points flagged,
 //                                       outliers found, per condition
@@ -451,7 +454,8 @@ int main(int argc, char** argv) {
     std::size_t n = 6000;
     std::vector<double> numbers;
     for (std::size_t a = write ? 4 : 0; a < args.size(); ++a) {
-        if (args[a].rfind("--", 0) != 0) numbers.push_back(std::atof(args[a].c_str()));
+        if (args[a] == "--contracted-points") ++a;  // its value is not a size
+        else if (args[a].rfind("--", 0) != 0) numbers.push_back(std::atof(args[a].c_str()));
     }
     if (!numbers.empty()) n = std::size_t(numbers[0]);
     SkeletonParameters pipeline = paper ? SkeletonParameters::paper() : SkeletonParameters{};
@@ -459,6 +463,11 @@ int main(int argc, char** argv) {
     if (std::find(args.begin(), args.end(), "--no-recentre") != args.end()) pipeline.thinning.recentre = false;
     if (std::find(args.begin(), args.end(), "--extend-tips") != args.end()) pipeline.thinning.extendTips = true;
     if (std::find(args.begin(), args.end(), "--no-link-limit") != args.end()) pipeline.thinning.linkLimit = 0;
+    if (std::find(args.begin(), args.end(), "--full-resolution") != args.end()) pipeline.resolution.maxContractedPoints = 0;
+    const auto contractedPoints = std::find(args.begin(), args.end(), "--contracted-points");
+    if (contractedPoints != args.end() && contractedPoints + 1 != args.end()) {
+        pipeline.resolution.maxContractedPoints = std::strtoull((contractedPoints + 1)->c_str(), nullptr, 10);
+    }
     std::vector<Subject> subjects = knownShapes();
     const std::vector<std::string> models{"elephant", "knot1", "eight", "hand"};
     const std::filesystem::path folder = extractModels(models);

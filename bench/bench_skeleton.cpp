@@ -1,15 +1,24 @@
-// Benchmark of the whole pipeline (contraction, thinning, embedding): time per stage,
-// the skeleton's size and topology, and peak memory for sampled tori of growing size
-// (the right answer is always one cycle). One child process per case.
+// Benchmark of the whole pipeline as a user runs it: reading a binary PLY file, then the
+// skeleton (multi-resolution subsample, 1-rings, contraction, thinning, embedding,
+// finishing), with time per stage, the skeleton's topology and peak memory after reading
+// and at the end, for sampled tori of growing size (the right answer is always one cycle).
+// The clouds are generated at run time into a temporary folder (10M points: 240 MB) and
+// deleted afterwards. One child process per step, so each peak is the case's own.
 //
-// usage: bench_skeleton [SIZE ...]      default sizes: 10000 100000 1000000
+// usage: bench_skeleton [SIZE ...] [--full-resolution]
+//        default sizes: 10000 100000 1000000 10000000
 #include "run_in_child.h"
 
 #include <pcskeleton/curve_skeleton.h>
+#include <pcskeleton/io/point_cloud_io.h>
 #include "support/sampled_shapes.h"
 
 #include <chrono>
 #include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
 #include <vector>
 
 using namespace pcskeleton;
@@ -17,22 +26,43 @@ using namespace pcskeleton;
 namespace {
 
 struct Row {
+    double reading = 0, total = 0;
     StageSeconds seconds;
-    double total = 0;
+    double peakAfterReadingMegabytes = 0;
+    std::size_t contracted = 0;
     int iterations = 0, nodes = 0, cycles = 0;
+    bool everyPointHasNode = false;
 };
 
-Row runCase(std::size_t n) {
-    const PointList cloud = shapes::torus(n, 1.0, 0.3, 7);
-    const auto start = std::chrono::steady_clock::now();
-    const SkeletonResult result = computeCurveSkeleton(cloud);
+double peakResidentMegabytes() {
+    std::ifstream status("/proc/self/status");
+    std::string line;
+    while (std::getline(status, line)) {
+        if (line.rfind("VmHWM:", 0) == 0) return std::atof(line.c_str() + 6) / 1024.0;
+    }
+    return 0;
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+Row runCase(const std::string& file, const SkeletonParameters& parameters) {
     Row row;
-    row.total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const auto start = std::chrono::steady_clock::now();
+    const PointList cloud = readPointCloud(file);
+    row.reading = secondsSince(start);
+    row.peakAfterReadingMegabytes = peakResidentMegabytes();
+    const SkeletonResult result = computeCurveSkeleton(cloud, parameters);
+    row.total = secondsSince(start);
     row.seconds = result.seconds;
+    row.contracted = result.quality.points;
     row.iterations = static_cast<int>(result.contraction.iterations.size());
     const SkeletonTopology t = analyseTopology(result.skeleton);
     row.nodes = t.nodes;
     row.cycles = t.cycles;
+    row.everyPointHasNode = result.skeleton.pointNode.size() == cloud.size();
+    for (int node : result.skeleton.pointNode) row.everyPointHasNode &= node >= 0;
     return row;
 }
 
@@ -40,23 +70,47 @@ Row runCase(std::size_t n) {
 
 int main(int argc, char** argv) {
     std::vector<std::size_t> sizes;
-    for (int a = 1; a < argc; ++a) sizes.push_back(std::strtoull(argv[a], nullptr, 10));
-    if (sizes.empty()) sizes = {10000, 100000, 1000000};
+    SkeletonParameters parameters;
+    for (int a = 1; a < argc; ++a) {
+        if (std::strcmp(argv[a], "--full-resolution") == 0) parameters.resolution.maxContractedPoints = 0;
+        else sizes.push_back(std::strtoull(argv[a], nullptr, 10));
+    }
+    if (sizes.empty()) sizes = {10000, 100000, 1000000, 10000000};
+    const std::filesystem::path folder =
+        std::filesystem::temp_directory_path() / ("bench_skeleton_" + std::to_string(getpid()));
+    std::filesystem::create_directories(folder);
 
-    std::printf("Curve skeleton of a sampled torus (1 cycle expected), %ld cores\n", sysconf(_SC_NPROCESSORS_ONLN));
-    std::printf("%9s  %5s  %8s  %11s  %8s  %9s  %8s  %5s  %6s  %9s\n", "points", "iters", "1-rings", "contraction",
-                "thinning", "embedding", "total", "nodes", "cycles", "peak RSS");
+    std::printf("Curve skeleton of a sampled torus read from a binary PLY file (1 cycle expected), %s, %ld cores.\n"
+                "Peak memory: resident set after reading the file, and at the end.\n",
+                parameters.resolution.maxContractedPoints == 0 ? "full resolution" : "default pipeline",
+                sysconf(_SC_NPROCESSORS_ONLN));
+    std::printf("%9s %8s %7s %7s %8s %8s %6s %6s %5s %8s %6s %6s %10s %9s\n", "points", "contracted", "read",
+                "subsample", "1-rings", "contract", "thin", "finish", "iters", "total", "nodes", "cycles",
+                "peak read", "peak");
     for (std::size_t n : sizes) {
+        const std::string file = (folder / ("torus" + std::to_string(n) + ".ply")).string();
+        int written = 0;
+        double unused = 0;
+        const bool generated = runInChild(
+            [&] {
+                writePointCloud(shapes::torus(n, 1.0, 0.3, 7), file);
+                return 1;
+            },
+            written, unused);
         Row row;
         double peakMegabytes = 0;
-        if (!runInChild([&] { return runCase(n); }, row, peakMegabytes)) {
+        if (!generated || !runInChild([&] { return runCase(file, parameters); }, row, peakMegabytes)) {
             std::printf("%9zu  failed\n", n);
-            continue;
+        } else {
+            const StageSeconds& s = row.seconds;
+            std::printf("%9zu %10zu %6.2fs %8.2fs %7.2fs %7.2fs %5.2fs %5.2fs %5d %7.2fs %6d %6d %7.0f MB %6.0f MB%s\n", n,
+                        row.contracted, row.reading, s.subsampling, s.neighbourhoods, s.contraction,
+                        s.thinning + s.embedding, s.finishing, row.iterations, row.total, row.nodes, row.cycles,
+                        row.peakAfterReadingMegabytes, peakMegabytes,
+                        row.everyPointHasNode ? "" : "  (some points without a node)");
         }
-        const StageSeconds& s = row.seconds;
-        std::printf("%9zu  %5d  %7.2fs  %10.2fs  %7.2fs  %8.2fs  %7.2fs  %5d  %6d  %6.0f MB\n", n, row.iterations,
-                    s.neighbourhoods, s.contraction, s.thinning, s.embedding, row.total, row.nodes, row.cycles,
-                    peakMegabytes);
+        std::filesystem::remove(file);
     }
+    std::filesystem::remove_all(folder);
     return 0;
 }

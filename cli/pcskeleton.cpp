@@ -7,6 +7,7 @@
 #include <pcskeleton/io/point_cloud_io.h>
 #include <pcskeleton/io/skeleton_io.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -57,6 +58,7 @@ std::string optionOf(Parameter parameter) {
         case Parameter::OutlierClusterShare: return "--outlier-cluster";
         case Parameter::DenoisingPasses: return "--denoise";
         case Parameter::LinkLimit: return "--link-limit";
+        case Parameter::ContractedPoints: return "--contracted-points (without --full-resolution)";
         case Parameter::Resolution: return "--resolution";
         case Parameter::SmoothWeight: return "--smooth-weight";
         case Parameter::SurfaceWeight: return "--surface-weight";
@@ -89,6 +91,7 @@ void printHelp() {
     const ThinningParameters t;
     const OutlierParameters o;
     const ReconstructionParameters r;
+    const ResolutionParameters m;
     std::printf(
         "Usage: pcskeleton INPUT -o OUTPUT [options]             the skeleton\n"
         "       pcskeleton INPUT -o OUTPUT --surface SURFACE [...]  and the surface it gives\n"
@@ -182,9 +185,17 @@ void printHelp() {
         "                        [%d] = automatic: %d passes if the cloud is noisy (its\n"
         "                        surface noise, in the report, above %g), none if clean;\n"
         "                        0 never (the paper); 1-%d passes always\n"
+        "  --contracted-points N a cloud of more points is contracted through a well-spread\n"
+        "                        subsample of at most N (one per cube of a grid); every\n"
+        "                        point still gets its node and the radii come from all\n"
+        "                        points [%zu]. Raise it for fine detail in huge scans.\n"
+        "  --full-resolution     contract every point (the paper; about 2.7 KB of memory\n"
+        "                        per point, minutes at 1M points)\n"
+        "  --memory-limit GB     refuse, before any work, a cloud whose computation would\n"
+        "                        need more [80%% of the machine's memory]\n"
         "  --paper               the paper's pipeline exactly: the same as --keep-outliers\n"
         "                        --denoise 0 --no-recentre --no-refine --no-extend-tips\n"
-        "                        --link-limit 0\n"
+        "                        --link-limit 0 --full-resolution\n"
         "  --report FILE         also write the quality report to FILE\n"
         "  --force               replace output files that exist already (never the input)\n"
         "  --quiet               no progress and no summary on stderr\n"
@@ -200,7 +211,7 @@ void printHelp() {
         c.neighbourCount, c.initialContractionWeight, c.initialAttractionWeight, c.contractionScale,
         c.maxContractionWeight, c.maxAttractionWeight, c.laplacianRowLimit, c.maxIterations, c.terminationThreshold,
         t.sampleRadius, t.linkLimit, o.isolationFactor, o.localFactor, o.clusterShare, c.denoisingPasses,
-        kPassesForNoisySurface, kNoisySurface, kMaximumDenoisingPasses);
+        kPassesForNoisySurface, kNoisySurface, kMaximumDenoisingPasses, m.maxContractedPoints);
 }
 
 double parseNumber(const std::string& option, const std::string& text) {
@@ -288,6 +299,16 @@ bool parseArguments(int argc, char** argv, Options& options) {
         {"--outlier-local", [&](const std::string& v) { c.outliers.localFactor = parseNumber("--outlier-local", v); }},
         {"--outlier-cluster", [&](const std::string& v) { c.outliers.clusterShare = parseNumber("--outlier-cluster", v); }},
         {"--denoise", [&](const std::string& v) { c.denoisingPasses = parseInteger("--denoise", v); }},
+        {"--contracted-points", [&](const std::string& v) {
+             const int count = parseInteger("--contracted-points", v);
+             if (count < 1) throw UsageError("--contracted-points must be at least 1 (--full-resolution contracts every point)");
+             options.parameters.resolution.maxContractedPoints = std::size_t(count);
+         }},
+        {"--memory-limit", [&](const std::string& v) {
+             const double gigabytes = parseNumber("--memory-limit", v);
+             if (!(gigabytes > 0) || !std::isfinite(gigabytes)) throw UsageError("--memory-limit must be a positive number of GB");
+             options.parameters.resolution.memoryLimit = gigabytes * 1e9;
+         }},
     };
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
@@ -302,6 +323,8 @@ bool parseArguments(int argc, char** argv, Options& options) {
             options.parameters.thinning.refine = arg == "--refine";
         } else if (arg == "--no-recentre") {
             options.parameters.thinning.recentre = false;
+        } else if (arg == "--full-resolution") {
+            options.parameters.resolution.maxContractedPoints = 0;
         } else if (arg == "--keep-outliers") {
             c.outliers.detect = false;
         } else if (arg == "--paper") {
@@ -384,11 +407,11 @@ int main(int argc, char** argv) {
                 const StageSeconds& s = result.seconds;
                 std::fprintf(stderr,
                              "pcskeleton: %s: %zu points -> %s; contraction: %zu iterations, %s; "
-                             "time: 1-rings %.2f s, contraction %.2f s, thinning %.2f s, embedding %.2f s, "
+                             "time: subsampling %.2f s, 1-rings %.2f s, contraction %.2f s, thinning %.2f s, embedding %.2f s, "
                              "finishing %.2f s\n%s\n",
                              options.input.c_str(), points.size(), describe(result.quality.topology).c_str(),
                              result.contraction.iterations.size(), describe(result.contraction.stopReason).c_str(),
-                             s.neighbourhoods, s.contraction, s.thinning, s.embedding, s.finishing, report.c_str());
+                             s.subsampling, s.neighbourhoods, s.contraction, s.thinning, s.embedding, s.finishing, report.c_str());
             }
             skeleton = std::move(result.skeleton);
         }

@@ -110,12 +110,14 @@ fine=$($GRAPH show knot.ply | sed 's/.*nodes.: \([0-9]*\).*/\1/')
 "$PCSKELETON" --help >help.txt
 for option in --contracted --correspondence --k --wl --wh --sl --max-wl --max-wh --row-limit --iterations \
               --threshold --radius --link-limit --no-extend-tips --refine --no-refine --no-recentre --keep-outliers --outlier-isolation \
-              --outlier-local --outlier-cluster --denoise --paper --report --force --quiet; do
+              --outlier-local --outlier-cluster --denoise --contracted-points --full-resolution --memory-limit \
+              --paper --report --force --quiet; do
   grep -q -- "$option" help.txt || fail "--help does not document $option"
 done
 grep -q "\[0.02\]" help.txt || fail "--help does not give the radius default"
 grep -q "apart were pulled to different bones" help.txt && grep -q "\[4\]" help.txt \
   || fail "--help does not explain --link-limit with its default"
+grep -q "points \[20000\]" help.txt || fail "--help does not give the --contracted-points default"
 
 # Bad input: non-zero exit and a one-line reason; nothing written.
 expect_error() {  # exit code, text in the message, arguments...
@@ -205,4 +207,27 @@ expect_error 2 "--surface 'ring.ply' is an input file" torus.ply --skeleton ring
 printf 'v 0 0 0\nv 1 0 0\nl 1 2\n' > no_radius.obj
 expect_error 1 "have no radius.*Give the skeleton radii" torus.ply --skeleton no_radius.obj --surface s.off
 [ ! -e s.off ] || fail "a refused reconstruction wrote s.off"
+
+# Multi-resolution: 30000 points through the default subsample of 20000; every point gets
+# its node. --full-resolution contracts all. A cloud too big for --memory-limit is refused
+# before any work, with the size it needs.
+/usr/bin/python3 - big_torus.xyz <<'PY'
+import sys, numpy as np
+rng = np.random.default_rng(3); u, v = rng.random((2, 30000)) * 2 * np.pi
+np.savetxt(sys.argv[1], np.c_[(1 + 0.3 * np.cos(v)) * np.cos(u), (1 + 0.3 * np.cos(v)) * np.sin(u), 0.3 * np.sin(v)], fmt='%.6f')
+PY
+"$PCSKELETON" big_torus.xyz -o big.ply --correspondence big_nodes.txt 2>big.log
+grep -q "^Input: 30000 points, 0 outliers set aside (no node); multi-resolution: [0-9]* contracted" big.log \
+  || { cat big.log; fail "the report does not say the cloud was subsampled"; }
+[ "$(wc -l <big_nodes.txt)" = 30000 ] && ! grep -q -- "^-" big_nodes.txt || fail "not every point has a node"
+$GRAPH check big.ply --cycles 1 --components 1 || fail "the subsampled torus has the wrong topology"
+"$PCSKELETON" big_torus.xyz -o big_full.ply --full-resolution 2>big_full.log
+grep -q "^Input: 30000 points in 1 part" big_full.log || { cat big_full.log; fail "--full-resolution subsampled"; }
+"$PCSKELETON" big_torus.xyz -o big_few.ply --contracted-points 5000 2>big_few.log
+grep -q "multi-resolution: [1-4][0-9][0-9][0-9] contracted" big_few.log || { cat big_few.log; fail "--contracted-points 5000 ignored"; }
+expect_error 2 "--contracted-points must be at least 1" big_torus.xyz -o m.ply --contracted-points 0
+expect_error 2 "--memory-limit must be a positive number" big_torus.xyz -o m.ply --memory-limit -1
+expect_error 1 "A skeleton of 30000 points, all 30000 of them contracted, needs about 0.081 GB.*more than the 0.05 GB allowed; at most [0-9]* contracted points would fit. Lower --contracted-points" \
+  big_torus.xyz -o m.ply --full-resolution --memory-limit 0.05
+[ ! -e m.ply ] || fail "a refused run wrote m.ply"
 echo "pcskeleton command line: OK"

@@ -11,7 +11,7 @@ HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 
 if [ -z "${PCSKELETON_IN_XVFB:-}" ]; then
   # A fixed screen size: the menu and dialog positions below depend on it.
-  PCSKELETON_IN_XVFB=1 exec xvfb-run -a -s "-screen 0 1280x900x24" "$0" "$@"
+  PCSKELETON_IN_XVFB=1 exec xvfb-run -a -s "-screen 0 1280x1024x24" "$0" "$@"
 fi
 
 rm -rf "$WORK"; mkdir -p "$WORK"; cd "$WORK"
@@ -73,8 +73,8 @@ click 160 386         # Point Set
 click 640 436 1.5     # Compute Curve Skeleton (Laplacian Contraction)
 wait_window "Compute Curve Skeleton" 10
 shot skeleton-dialog
-click 324 892 5       # Apply
-click 112 892         # Close
+click 324 920 5       # Apply
+click 112 920         # Close
 shot skeleton-layer
 click 120 10          # Filters
 click 160 386         # Point Set

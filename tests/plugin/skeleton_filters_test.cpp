@@ -4,6 +4,7 @@
 
 #include "support/sampled_shapes.h"
 #include "support/scan_simulation.h"
+#include <pcskeleton/curve_skeleton.h>
 #include <pcskeleton/io/skeleton_io.h>
 
 #include <QFile>
@@ -381,4 +382,36 @@ TEST_F(SkeletonFilterTest, ALayerFarFromTheOriginIsRefusedWithTheReason) {
     addPointLayer(torus, "near");
     QAction* skeleton = action(kSkeletonFilter);
     EXPECT_TRUE(apply(skeleton, defaults(skeleton))) << plugin->errorMsg().toStdString();
+}
+
+// A layer of more points than the default subsample is contracted through it: the log says
+// so, and every point of the segments layer has its node. "Full resolution" contracts all.
+TEST_F(SkeletonFilterTest, LargeLayersAreContractedThroughASubsampleUnlessFullResolution) {
+    LogCapture capture(plugin);
+    const std::size_t size = pcskeleton::ResolutionParameters{}.maxContractedPoints + 5000;
+    MeshModel* input = addPointLayer(pcskeleton::shapes::torus(size, 1.0, 0.3, 21), "big");
+    QAction* a = action(kSkeletonFilter);
+    RichParameterList p = defaults(a);
+    ASSERT_TRUE(p.hasParameter("fullResolution"));
+    EXPECT_FALSE(p.getBool("fullResolution"));
+    EXPECT_FALSE(p.getParameterByName("fullResolution").fieldDescription().isEmpty());
+    ASSERT_TRUE(apply(a, p)) << plugin->errorMsg().toStdString();
+    EXPECT_EQ(topologyOfLayer(*document.mm()).cycles, 1);
+    const QString log = capture.text(GLLogStream::FILTER);
+    EXPECT_TRUE(log.contains(QString("Multi-resolution: ")) && log.contains(QString("of the %1 points contracted").arg(size)))
+        << log.toStdString();
+    MeshModel* segments = document.meshList[1];
+    ASSERT_EQ(segments->cm.vert.size(), size);
+    auto node = vcg::tri::Allocator<CMeshO>::FindPerVertexAttribute<int>(segments->cm, "pcs_node");
+    ASSERT_TRUE(vcg::tri::Allocator<CMeshO>::IsValidHandle(segments->cm, node));
+    for (std::size_t i = 0; i < size; ++i) ASSERT_GE(node[i], 0) << "point " << i;
+
+    document.setCurrentMesh(input->id());
+    p.setValue("fullResolution", BoolValue(true));
+    LogCapture fullCapture(plugin);
+    ASSERT_TRUE(apply(a, p)) << plugin->errorMsg().toStdString();
+    EXPECT_EQ(topologyOfLayer(*document.mm()).cycles, 1);
+    const QString fullLog = fullCapture.text(GLLogStream::FILTER);
+    EXPECT_FALSE(fullLog.contains("Multi-resolution")) << fullLog.toStdString();
+    EXPECT_TRUE(fullLog.contains(QString("Input: %1 points in").arg(size))) << fullLog.toStdString();
 }

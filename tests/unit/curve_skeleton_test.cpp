@@ -183,3 +183,100 @@ TEST(CurveSkeleton, ContractedPointsMustMatchTheInput) {
     withNaN[3].x() = std::nan("");
     EXPECT_THROW(skeletonFromContractedPoints(cloud, withNaN, {}, {}), InvalidInput);
 }
+
+// Multi-resolution: 200K points contracted through a subsample of 20K (the default), with
+// every input point given its node and the radii measured on all of them.
+TEST(MultiResolution, LargeTorusHasOneCycleAndEveryPointItsNode) {
+    const PointList cloud = shapes::torus(200000, 1.0, 0.25, 11);
+    const SkeletonResult result = computeCurveSkeleton(cloud);
+    const SkeletonTopology t = analyseTopology(result.skeleton);
+    EXPECT_EQ(t.cycles, 1) << describe(t);
+    EXPECT_EQ(t.components, 1) << describe(t);
+    EXPECT_EQ(t.tips, 0) << describe(t);
+    EXPECT_EQ(result.quality.inputPoints, cloud.size());
+    EXPECT_LE(result.quality.points, ResolutionParameters{}.maxContractedPoints);
+    ASSERT_EQ(result.skeleton.pointNode.size(), cloud.size());
+    for (int node : result.skeleton.pointNode) ASSERT_GE(node, 0);
+    ASSERT_EQ(result.contraction.contracted.size(), cloud.size());
+    for (std::size_t n = 0; n < result.skeleton.nodeCount(); ++n) {
+        EXPECT_NEAR(result.skeleton.radii[n], 0.25, 0.025) << "node " << n;
+    }
+    EXPECT_NE(describeFindings(result.quality).find("multi-resolution: "), std::string::npos);
+}
+
+TEST(MultiResolution, LargeYHasThreeTips) {
+    const PointList cloud = shapes::tube(yShape(1.0), 0.12, 200000, 12);
+    const SkeletonResult result = computeCurveSkeleton(cloud);
+    const SkeletonTopology t = analyseTopology(result.skeleton);
+    EXPECT_EQ(t.tips, 3) << describe(t);
+    EXPECT_EQ(t.junctions, 1) << describe(t);
+    EXPECT_EQ(t.cycles, 0) << describe(t);
+    for (int node : result.skeleton.pointNode) ASSERT_GE(node, 0);
+    // Radii along the arms, away from the junction and the rounded ends.
+    for (std::size_t n = 0; n < result.skeleton.nodeCount(); ++n) {
+        const double fromCentre = result.skeleton.nodes[n].norm();
+        if (fromCentre > 0.3 && fromCentre < 0.8) EXPECT_NEAR(result.skeleton.radii[n], 0.12, 0.012) << "node " << n;
+    }
+}
+
+// Outliers are found on the whole cloud before the grid, which would keep each isolated
+// point as surely as a patch of surface: they get no node.
+TEST(MultiResolution, OutliersOfTheWholeCloudGetNoNode) {
+    PointList cloud = shapes::torus(60000, 1.0, 0.25, 13);
+    const std::size_t surface = cloud.size();
+    for (int i = 0; i < 300; ++i) {
+        const double a = 0.37 * i, b = 0.91 * i;
+        cloud.emplace_back(1.6 * std::cos(a), 1.6 * std::sin(a), 0.9 * std::sin(b));
+    }
+    SkeletonParameters parameters;
+    parameters.resolution.maxContractedPoints = 8000;
+    const SkeletonResult result = computeCurveSkeleton(cloud, parameters);
+    EXPECT_EQ(analyseTopology(result.skeleton).cycles, 1) << describe(analyseTopology(result.skeleton));
+    std::size_t withoutNode = 0;
+    for (std::size_t i = surface; i < cloud.size(); ++i) withoutNode += result.skeleton.pointNode[i] < 0;
+    EXPECT_GE(withoutNode, 290u);
+    EXPECT_GE(result.quality.inputOutliers, 290u);
+}
+
+TEST(MultiResolution, FullResolutionContractsEveryPoint) {
+    const PointList cloud = shapes::torus(12000, 1.0, 0.25, 14);
+    SkeletonParameters parameters;
+    parameters.resolution.maxContractedPoints = 5000;
+    EXPECT_LE(computeCurveSkeleton(cloud, parameters).quality.points, 5000u);
+    parameters.resolution.maxContractedPoints = 0;
+    const SkeletonResult full = computeCurveSkeleton(cloud, parameters);
+    EXPECT_EQ(full.quality.points, cloud.size());
+    EXPECT_EQ(describeFindings(full.quality).find("multi-resolution"), std::string::npos);
+    EXPECT_EQ(SkeletonParameters::paper().resolution.maxContractedPoints, 0u) << "the paper contracts every point";
+}
+
+TEST(MultiResolution, SameSkeletonRunAfterRun) {
+    const PointList cloud = shapes::tube(yShape(1.0), 0.12, 40000, 15);
+    SkeletonParameters parameters;
+    parameters.resolution.maxContractedPoints = 6000;
+    const SkeletonResult a = computeCurveSkeleton(cloud, parameters), b = computeCurveSkeleton(cloud, parameters);
+    EXPECT_EQ(a.skeleton.nodes, b.skeleton.nodes);
+    EXPECT_EQ(a.skeleton.edges, b.skeleton.edges);
+    EXPECT_EQ(a.skeleton.pointNode, b.skeleton.pointNode);
+}
+
+// A cloud too big for the memory given is refused before any work, with the size it needs.
+TEST(MultiResolution, CloudTooBigForMemoryIsRefusedWithTheSizeItNeeds) {
+    const PointList cloud = shapes::sphere(30000, 1.0);
+    SkeletonParameters parameters;
+    parameters.resolution.maxContractedPoints = 0;
+    parameters.resolution.memoryLimit = 20e6;  // 20 MB: full resolution needs about 80
+    try {
+        computeCurveSkeleton(cloud, parameters);
+        FAIL() << "no refusal";
+    } catch (const InvalidInput& e) {
+        const std::string text = e.what();
+        EXPECT_NE(text.find("30000 points"), std::string::npos) << text;
+        EXPECT_NE(text.find("0.081 GB"), std::string::npos) << text;
+        EXPECT_NE(text.find("number of contracted points"), std::string::npos) << text;
+    }
+    parameters.resolution.maxContractedPoints = 5000;  // about 16 MB
+    EXPECT_NO_THROW(computeCurveSkeleton(cloud, parameters));
+    EXPECT_GT(estimatedPeakBytes(10000000, 20000), 1e9);
+    EXPECT_LT(estimatedPeakBytes(10000000, 20000), 2e9);
+}

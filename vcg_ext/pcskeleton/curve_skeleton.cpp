@@ -11,10 +11,41 @@
 #include <limits>
 #include <sstream>
 
+#include <unistd.h>
+
 namespace pcskeleton {
 
 namespace {
 
+// Peak memory per point, measured by bench_skeleton (2 cores, 24 GB): about 2.7 KB per
+// contracted point (2667 MB at 1M points, full resolution: 1-rings, Laplacian, factor), and
+// per point that is only carried (multi-resolution) about 100 bytes (its input position, its
+// subsample links, its contracted position and node in the result, the reader's copy).
+constexpr double kBytesPerContractedPoint = 2700;
+constexpr double kBytesPerCarriedPoint = 100;
+constexpr double kShareOfMemoryUsable = 0.8;
+// Fewer contracted points than this leave too few per node to be worth suggesting.
+constexpr std::size_t kFewestUsefulContractedPoints = 2000;
+
+void refuseWorkLargerThanMemory(std::size_t points, const ResolutionParameters& parameters) {
+    const double needed = estimatedPeakBytes(points, parameters.maxContractedPoints);
+    const double physical = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+    const double limit = parameters.memoryLimit > 0 ? parameters.memoryLimit : kShareOfMemoryUsable * physical;
+    if (!(limit > 0) || needed <= limit) return;
+    std::ostringstream text;
+    text.precision(2);
+    text << "A skeleton of " << points << " points, " << (parameters.maxContractedPoints == 0 ? "all" : "at most")
+         << " " << (parameters.maxContractedPoints == 0 ? points : std::min(points, parameters.maxContractedPoints))
+         << " of them contracted, needs about " << needed / 1e9 << " GB of memory, more than the "
+         << limit / 1e9 << " GB " << (parameters.memoryLimit > 0 ? "allowed" : "this machine can give");
+    // The most contracted points that would fit, every other point only carried.
+    const double fitting = (limit - kBytesPerCarriedPoint * double(points)) / (kBytesPerContractedPoint - kBytesPerCarriedPoint);
+    if (fitting >= double(kFewestUsefulContractedPoints)) {
+        text << "; at most " << std::size_t(fitting) << " contracted points would fit";
+        throw InvalidInput(text.str() + ".", {Remedy::lower(Parameter::ContractedPoints)});
+    }
+    throw InvalidInput(text.str() + ": split the scan, or use a machine with more memory.");
+}
 
 // The input points in the input's frame and order (duplicates merged by the cloud keep
 // their common position).
@@ -104,12 +135,74 @@ SkeletonResult skeletonFromContraction(const LaplacianContraction& contraction, 
     return result;
 }
 
+double estimatedPeakBytes(std::size_t points, std::size_t maxContractedPoints) {
+    const std::size_t contracted = maxContractedPoints == 0 ? points : std::min(points, maxContractedPoints);
+    return kBytesPerContractedPoint * double(contracted) + kBytesPerCarriedPoint * double(points - contracted);
+}
+
+ContractionInput::ContractionInput(const PointList& input, const ResolutionParameters& parameters,
+                                   const OutlierParameters& outliers)
+    : input_(input) {
+    refuseWorkLargerThanMemory(input.size(), parameters);
+    if (parameters.maxContractedPoints == 0 || input.size() <= parameters.maxContractedPoints) return;
+    const Stopwatch stopwatch;
+    // The grid needs finite coordinates; the contraction would refuse these anyway.
+    rejectNonFinite(input, "input points", Remedy::take(Step::RemoveNonFinitePoints));
+    checkOutlierParameters(outliers);
+    const std::vector<char> outlier = findOutliers(input, outliers);
+    outliers_ = std::size_t(std::count(outlier.begin(), outlier.end(), 1));
+    subsample_ = spreadSubsample(input, parameters.maxContractedPoints, outlier);
+    kept_ = keptPoints(input, subsample_);
+    subsampled_ = true;
+    seconds_ = stopwatch.seconds();
+}
+
+void ContractionInput::carryToAllPoints(SkeletonResult& result) const {
+    if (!subsampled_) return;
+    const Stopwatch stopwatch;
+    SkeletonGraph& skeleton = result.skeleton;
+    const std::vector<int> keptNode = std::move(skeleton.pointNode);
+    skeleton.pointNode.resize(input_.size());
+    for (std::size_t i = 0; i < input_.size(); ++i) {
+        const int keeper = subsample_.keeperOf[i];
+        skeleton.pointNode[i] = keeper < 0 ? -1 : keptNode[keeper];
+    }
+    // Radii from every point: the mean distance to the node, as the embedding measures it.
+    std::vector<double> distanceSum(skeleton.nodeCount(), 0.0);
+    std::vector<std::size_t> members(skeleton.nodeCount(), 0);
+    for (std::size_t i = 0; i < input_.size(); ++i) {
+        const int node = skeleton.pointNode[i];
+        if (node < 0) continue;
+        distanceSum[node] += (input_[i] - skeleton.nodes[node]).norm();
+        ++members[node];
+    }
+    for (std::size_t n = 0; n < skeleton.nodeCount(); ++n) {
+        if (members[n] > 0 && distanceSum[n] > 0) skeleton.radii[n] = distanceSum[n] / double(members[n]);
+    }
+    PointList& contracted = result.contraction.contracted;
+    if (!contracted.empty()) {
+        const PointList keptContracted = std::move(contracted);
+        contracted.resize(input_.size());
+        for (std::size_t i = 0; i < input_.size(); ++i) {
+            const int keeper = subsample_.keeperOf[i];
+            contracted[i] = keeper < 0 ? input_[i] : keptContracted[keeper];  // an outlier stays, as in the contraction
+        }
+    }
+    result.quality.inputPoints = input_.size();
+    result.quality.inputOutliers = outliers_;
+    result.seconds.subsampling = seconds_ + stopwatch.seconds();
+    result.quality.subsampleCellSize = subsample_.cellSize;
+}
+
 SkeletonResult computeCurveSkeleton(const PointList& input, const SkeletonParameters& parameters,
                                     const ProgressCallback& progress) {
     checkThinningParameters(parameters.thinning);
-    LaplacianContraction contraction(input, parameters.contraction, progressRange(progress, 0, 25));
+    const ContractionInput work(input, parameters.resolution, parameters.contraction.outliers);
+    LaplacianContraction contraction(work.points(), parameters.contraction, progressRange(progress, 0, 25));
     contraction.iterateToEnd(progressRange(progress, 25, 90));
-    return skeletonFromContraction(contraction, parameters.thinning, progressRange(progress, 90, 100));
+    SkeletonResult result = skeletonFromContraction(contraction, parameters.thinning, progressRange(progress, 90, 100));
+    work.carryToAllPoints(result);
+    return result;
 }
 
 SkeletonResult skeletonFromContractedPoints(const PointList& input, const PointList& contracted,

@@ -9,6 +9,7 @@
 #pragma once
 
 #include "pcskeleton/contraction/laplacian_contraction.h"
+#include "pcskeleton/contraction/point_subsampling.h"
 #include "pcskeleton/skeleton/skeleton_graph.h"
 #include "pcskeleton/analysis/skeleton_quality.h"
 
@@ -41,14 +42,30 @@ struct ThinningParameters {
     bool recentre = true;
 };
 
+struct ResolutionParameters {
+    // A cloud with more points than this is contracted through a well-spread subsample of
+    // at most this many (point_subsampling.h), and every input point takes the node of the
+    // subsample point that stands for it; radii come from all points. 0 = contract every
+    // point (the paper's). Not in the paper. 20000 by bench_skeleton and bench_robustness
+    // (README): the 20K-point pipeline takes about 1.2 s on 2 cores, and the robustness
+    // suite sampled at 100K points gives the same topology through it as at full
+    // resolution.
+    std::size_t maxContractedPoints = 20000;
+    // Work whose estimated peak memory exceeds this many bytes is refused before it starts;
+    // 0 = 80% of the machine's physical memory.
+    double memoryLimit = 0.0;
+};
+
 struct SkeletonParameters {
     ContractionParameters contraction;
     ThinningParameters thinning;
+    ResolutionParameters resolution;
 
     // Turns off every step that is not the paper's (outlier detection, denoising, the
     // stretched-link limit, re-centring, refinement, tip extension), keeping every other
     // setting.
     void keepToThePaper() {
+        resolution.maxContractedPoints = 0;
         contraction.outliers.detect = false;
         contraction.denoisingPasses = 0;
         thinning.recentre = false;
@@ -65,6 +82,7 @@ struct SkeletonParameters {
 };
 
 struct StageSeconds {
+    double subsampling = 0;  // multi-resolution: outliers of the whole cloud, the grid, carrying back
     double neighbourhoods = 0, contraction = 0, thinning = 0, embedding = 0;
     double finishing = 0;  // refinement, tip extension and quality checks
 };
@@ -75,6 +93,45 @@ struct SkeletonResult {
     ContractionResult contraction;  // no iterations (stop reason NotStopped) when thinned from saved contracted points
     StageSeconds seconds;
 };
+
+// The points a contraction of `input` works on: all of them, or, above
+// `maxContractedPoints`, their spread subsample; then the skeleton computed from those,
+// carried to every input point. Refuses (InvalidInput) a cloud whose computation would
+// not fit in memory, naming the size it needs, before any work.
+//
+//     const ContractionInput work(points, parameters.resolution);
+//     LaplacianContraction contraction(work.points(), ...);  ...
+//     SkeletonResult result = skeletonFromContraction(contraction, ...);
+//     work.carryToAllPoints(result);
+class ContractionInput {
+public:
+    // `input` must outlive this object. When a subsample is taken, the outliers of the
+    // whole cloud are found first (`outliers`) and get no node: a grid keeps an isolated
+    // point as surely as a surface patch, so in the subsample they would weigh far more.
+    ContractionInput(const PointList& input, const ResolutionParameters& parameters,
+                     const OutlierParameters& outliers);
+
+    const PointList& points() const { return subsampled() ? kept_ : input_; }
+    bool subsampled() const { return subsampled_; }
+    const PointSubsample& subsample() const { return subsample_; }
+
+    // For a result computed on points(): the correspondence and the contracted positions
+    // for every input point (its subsample point's), radii from all the points of each
+    // node, and the report's input size. Nothing to do without a subsample.
+    void carryToAllPoints(SkeletonResult& result) const;
+
+private:
+    const PointList& input_;
+    bool subsampled_ = false;
+    PointSubsample subsample_;
+    std::size_t outliers_ = 0;  // of the whole cloud, left out of the subsample
+    PointList kept_;
+    double seconds_ = 0;
+};
+
+// Estimated peak memory, in bytes, of the skeleton of `points` points contracting at most
+// `maxContractedPoints` of them (0 = all).
+double estimatedPeakBytes(std::size_t points, std::size_t maxContractedPoints);
 
 // Throws InvalidInput for parameters thinning cannot use; call it before a long
 // contraction whose result would be thinned with them.

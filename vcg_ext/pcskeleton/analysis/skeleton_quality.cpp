@@ -95,6 +95,7 @@ SkeletonQuality assessSkeleton(const SkeletonGraph& skeleton, const NormalizedCl
     quality.topology = analyseTopology(skeleton);
     quality.nodeSpacing = nodeSpacing;
     quality.points = cloud.inputSize();
+    quality.inputPoints = cloud.inputSize();
     quality.outliers = cloud.outliers.size();
     quality.uncontractedPoints = countUncontracted(skeleton, cloud, contracted);
     checkInputParts(skeleton, cloud, rings, quality);
@@ -192,8 +193,17 @@ std::string describeFindings(const SkeletonQuality& q) {
           << (q.denoisingPasses > 0 ? ", a noisy cloud)" : ", a clean cloud)");
     }
     s << ".\n";
-    s << "Input: " << counted(q.points, "point", "points") << " in " << counted(std::size_t(q.inputParts), "part", "parts")
-      << "; " << counted(q.outliers, "outlier", "outliers") << " set aside (no node); " << q.uncontractedPoints
+    if (q.inputPoints > q.points) {
+        s << "Input: " << counted(q.inputPoints, "point", "points") << ", " << counted(q.inputOutliers, "outlier", "outliers")
+          << " set aside (no node); multi-resolution: " << q.points
+          << " contracted, one per cube of side " << std::setprecision(3) << q.subsampleCellSize
+          << ", the others take their cube's node. Of the contracted: "
+          << counted(std::size_t(q.inputParts), "part", "parts") << "; ";
+    } else {
+        s << "Input: " << counted(q.points, "point", "points") << " in "
+          << counted(std::size_t(q.inputParts), "part", "parts") << "; ";
+    }
+    s << counted(q.outliers, "outlier", "outliers") << " set aside (no node); " << q.uncontractedPoints
       << " did not contract.\n";
     s << "Tip extension: ";
     if (!q.tipsExtended) s << "off.\n";

@@ -52,7 +52,10 @@ struct SkeletonQuality {
     int denoisingPasses = 0;   // of the copy whose 1-rings were contracted (point_denoising.h)
     double surfaceNoise = -1;  // measured for the automatic choice, else -1
 
-    std::size_t points = 0;
+    std::size_t points = 0;         // contracted: all of the input, or its subsample (multi-resolution)
+    std::size_t inputPoints = 0;    // of the input; more than `points` when a subsample was contracted
+    double subsampleCellSize = 0.0; // the subsample's cube side (point_subsampling.h), input units
+    std::size_t inputOutliers = 0;  // multi-resolution: of the input, found before subsampling
     std::size_t outliers = 0;       // set aside before the 1-rings: no node
     std::size_t uncontractedPoints = 0;
     int inputParts = 0;             // connected parts of the input through the 1-rings

@@ -37,6 +37,7 @@ enum class Parameter {
     OutlierClusterShare,
     DenoisingPasses,
     LinkLimit,
+    ContractedPoints,
 };
 
 // Steps the user takes outside the computation that found the problem.
