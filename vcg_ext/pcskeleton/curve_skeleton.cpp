@@ -19,10 +19,11 @@ namespace {
 
 // Peak memory per point, measured by bench_skeleton (2 cores, 24 GB): about 2.7 KB per
 // contracted point (2667 MB at 1M points, full resolution: 1-rings, Laplacian, factor), and
-// per point that is only carried (multi-resolution) about 100 bytes (its input position, its
-// subsample links, its contracted position and node in the result, the reader's copy).
+// about 135 bytes per point that is only carried (1342 MB at 10M points, multi-resolution:
+// the input, the outlier test's neighbour lists and k-d tree, the subsample's links, the
+// result's contracted positions and correspondence).
 constexpr double kBytesPerContractedPoint = 2700;
-constexpr double kBytesPerCarriedPoint = 100;
+constexpr double kBytesPerCarriedPoint = 135;
 constexpr double kShareOfMemoryUsable = 0.8;
 // Fewer contracted points than this leave too few per node to be worth suggesting.
 constexpr std::size_t kFewestUsefulContractedPoints = 2000;
