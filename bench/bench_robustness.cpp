@@ -26,6 +26,8 @@
 //        bench_robustness [POINTS] --full-resolution | --contracted-points N
 //                                       every point contracted, or at most N (the
 //                                       multi-resolution pipeline's subsample; default 20000)
+//        bench_robustness [POINTS] --shape TEXT
+//                                       only the shapes whose name contains TEXT
 //        bench_robustness [POINTS] --outliers [ISOLATION CLUSTER LOCAL]
 //                                       outlier detection alone: surface points flagged,
 //                                       outliers found, per condition
@@ -454,7 +456,7 @@ int main(int argc, char** argv) {
     std::size_t n = 6000;
     std::vector<double> numbers;
     for (std::size_t a = write ? 4 : 0; a < args.size(); ++a) {
-        if (args[a] == "--contracted-points") ++a;  // its value is not a size
+        if (args[a] == "--contracted-points" || args[a] == "--shape") ++a;  // its value is not a size
         else if (args[a].rfind("--", 0) != 0) numbers.push_back(std::atof(args[a].c_str()));
     }
     if (!numbers.empty()) n = std::size_t(numbers[0]);
@@ -464,6 +466,9 @@ int main(int argc, char** argv) {
     if (std::find(args.begin(), args.end(), "--extend-tips") != args.end()) pipeline.thinning.extendTips = true;
     if (std::find(args.begin(), args.end(), "--no-link-limit") != args.end()) pipeline.thinning.linkLimit = 0;
     if (std::find(args.begin(), args.end(), "--full-resolution") != args.end()) pipeline.resolution.maxContractedPoints = 0;
+    // --shape TEXT: only the shapes whose name contains TEXT (e.g. the slow ones at 1M points).
+    const auto shapeFilter = std::find(args.begin(), args.end(), "--shape");
+    const std::string onlyShape = shapeFilter != args.end() && shapeFilter + 1 != args.end() ? *(shapeFilter + 1) : "";
     const auto contractedPoints = std::find(args.begin(), args.end(), "--contracted-points");
     if (contractedPoints != args.end() && contractedPoints + 1 != args.end()) {
         pipeline.resolution.maxContractedPoints = std::strtoull((contractedPoints + 1)->c_str(), nullptr, 10);
@@ -499,6 +504,7 @@ int main(int argc, char** argv) {
                 "tips", "parts", "mean d", "max d", "inside", "tip gap", "warn", "time");
     std::map<std::string, Tally> byCondition;
     for (const Subject& subject : subjects) {
+        if (subject.name.find(onlyShape) == std::string::npos) continue;
         for (const Condition& condition : conditions()) {
             Row row;
             double peak = 0;

@@ -117,7 +117,7 @@ done
 grep -q "\[0.02\]" help.txt || fail "--help does not give the radius default"
 grep -q "apart were pulled to different bones" help.txt && grep -q "\[4\]" help.txt \
   || fail "--help does not explain --link-limit with its default"
-grep -q "points \[20000\]" help.txt || fail "--help does not give the --contracted-points default"
+grep -q "points \[15000\]" help.txt || fail "--help does not give the --contracted-points default"
 
 # Bad input: non-zero exit and a one-line reason; nothing written.
 expect_error() {  # exit code, text in the message, arguments...
@@ -208,7 +208,7 @@ printf 'v 0 0 0\nv 1 0 0\nl 1 2\n' > no_radius.obj
 expect_error 1 "have no radius.*Give the skeleton radii" torus.ply --skeleton no_radius.obj --surface s.off
 [ ! -e s.off ] || fail "a refused reconstruction wrote s.off"
 
-# Multi-resolution: 30000 points through the default subsample of 20000; every point gets
+# Multi-resolution: 30000 points through the default subsample of 15000; every point gets
 # its node. --full-resolution contracts all. A cloud too big for --memory-limit is refused
 # before any work, with the size it needs.
 /usr/bin/python3 - big_torus.xyz <<'PY'
