@@ -280,3 +280,18 @@ TEST(MultiResolution, CloudTooBigForMemoryIsRefusedWithTheSizeItNeeds) {
     EXPECT_GT(estimatedPeakBytes(10000000, 20000), 1e9);
     EXPECT_LT(estimatedPeakBytes(10000000, 20000), 2e9);
 }
+
+// Just over the threshold, and under it once the outliers are set aside: no grid, and the
+// report says why every other point was contracted.
+TEST(MultiResolution, JustOverTheThresholdWithOutliersContractsEveryOtherPoint) {
+    PointList cloud = shapes::torus(2995, 1.0, 0.25, 16);
+    for (int i = 0; i < 10; ++i) cloud.emplace_back(3.0 + 0.5 * i, 2.0, 1.5);
+    SkeletonParameters parameters;
+    parameters.resolution.maxContractedPoints = 3000;
+    const SkeletonResult result = computeCurveSkeleton(cloud, parameters);
+    EXPECT_EQ(analyseTopology(result.skeleton).cycles, 1);
+    EXPECT_EQ(result.quality.points, 2995u);
+    const std::string report = describeFindings(result.quality);
+    EXPECT_NE(report.find("multi-resolution: 2995 contracted (all but the outliers: few enough)"), std::string::npos)
+        << report;
+}

@@ -195,9 +195,14 @@ std::string describeFindings(const SkeletonQuality& q) {
     s << ".\n";
     if (q.inputPoints > q.points) {
         s << "Input: " << counted(q.inputPoints, "point", "points") << ", " << counted(q.inputOutliers, "outlier", "outliers")
-          << " set aside (no node); multi-resolution: " << q.points
-          << " contracted, one per cube of side " << std::setprecision(3) << q.subsampleCellSize
-          << ", the others take their cube's node. Of the contracted: "
+          << " set aside (no node); multi-resolution: " << q.points << " contracted";
+        if (q.subsampleCellSize > 0) {
+            s << ", one per cube of side " << std::setprecision(3) << q.subsampleCellSize
+              << ", the others take their cube's node";
+        } else {
+            s << " (all but the outliers: few enough)";
+        }
+        s << ". Of the contracted: "
           << counted(std::size_t(q.inputParts), "part", "parts") << "; ";
     } else {
         s << "Input: " << counted(q.points, "point", "points") << " in "
