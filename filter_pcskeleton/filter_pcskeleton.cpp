@@ -546,12 +546,13 @@ bool FilterPCSkeletonPlugin::computeSkeleton(MeshDocument& md, const RichParamet
     const pcskeleton::ProgressCallback progress = progressOf(cb);
     pcskeleton::checkThinningParameters(thinning);  // before the contraction, not after it
 
-    const pcskeleton::ContractionInput work(input.points, pipeline.resolution, settings.outliers);
+    const pcskeleton::ContractionInput work(input.points, pipeline.resolution, settings.outliers,
+                                            pcskeleton::progressRange(progress, 0, 10));
     if (work.subsampled()) {
         Log("Multi-resolution: %zu of the %zu points contracted (one per cube of side %.4g); every point gets the node "
             "of its cube's point.", work.points().size(), input.points.size(), work.subsample().cellSize);
     }
-    pcskeleton::LaplacianContraction contraction(work.points(), settings, pcskeleton::progressRange(progress, 0, 25));
+    pcskeleton::LaplacianContraction contraction(work.points(), settings, pcskeleton::progressRange(progress, 10, 25));
     logContractionStart(source, contraction, work.points().size());
     const int done = contract(contraction, settings.maxIterations, [&](int iteration) {
         pcskeleton::report(progress, 25 + 65 * iteration / settings.maxIterations, "Contracting");

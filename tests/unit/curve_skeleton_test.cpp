@@ -5,7 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 using namespace pcskeleton;
 using shapes::Polyline;
@@ -294,4 +297,21 @@ TEST(MultiResolution, JustOverTheThresholdWithOutliersContractsEveryOtherPoint) 
     const std::string report = describeFindings(result.quality);
     EXPECT_NE(report.find("multi-resolution: 2995 contracted (all but the outliers: few enough)"), std::string::npos)
         << report;
+}
+
+// Long work shows progress: the subsample's steps first, never going backwards, to 100.
+TEST(MultiResolution, ProgressRisesThroughTheSubsample) {
+    const PointList cloud = shapes::torus(12000, 1.0, 0.25, 17);
+    SkeletonParameters parameters;
+    parameters.resolution.maxContractedPoints = 4000;
+    std::vector<int> percents;
+    std::vector<std::string> steps;
+    computeCurveSkeleton(cloud, parameters, [&](int percent, const char* what) {
+        percents.push_back(percent);
+        steps.emplace_back(what);
+    });
+    ASSERT_FALSE(percents.empty());
+    EXPECT_TRUE(std::is_sorted(percents.begin(), percents.end()));
+    EXPECT_EQ(percents.back(), 100);
+    EXPECT_EQ(steps.front(), "Multi-resolution: outliers of the whole cloud");
 }

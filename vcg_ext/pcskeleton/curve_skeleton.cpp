@@ -142,7 +142,7 @@ double estimatedPeakBytes(std::size_t points, std::size_t maxContractedPoints) {
 }
 
 ContractionInput::ContractionInput(const PointList& input, const ResolutionParameters& parameters,
-                                   const OutlierParameters& outliers)
+                                   const OutlierParameters& outliers, const ProgressCallback& progress)
     : input_(input) {
     refuseWorkLargerThanMemory(input.size(), parameters);
     if (parameters.maxContractedPoints == 0 || input.size() <= parameters.maxContractedPoints) return;
@@ -150,11 +150,14 @@ ContractionInput::ContractionInput(const PointList& input, const ResolutionParam
     // The grid needs finite coordinates; the contraction would refuse these anyway.
     rejectNonFinite(input, "input points", Remedy::take(Step::RemoveNonFinitePoints));
     checkOutlierParameters(outliers);
+    report(progress, 0, "Multi-resolution: outliers of the whole cloud");
     const std::vector<char> outlier = findOutliers(input, outliers);
     outliers_ = std::size_t(std::count(outlier.begin(), outlier.end(), 1));
+    report(progress, 80, "Multi-resolution: subsample");
     subsample_ = spreadSubsample(input, parameters.maxContractedPoints, outlier);
     kept_ = keptPoints(input, subsample_);
     subsampled_ = true;
+    report(progress, 100, "Multi-resolution: subsample taken");
     seconds_ = stopwatch.seconds();
 }
 
@@ -198,8 +201,9 @@ void ContractionInput::carryToAllPoints(SkeletonResult& result) const {
 SkeletonResult computeCurveSkeleton(const PointList& input, const SkeletonParameters& parameters,
                                     const ProgressCallback& progress) {
     checkThinningParameters(parameters.thinning);
-    const ContractionInput work(input, parameters.resolution, parameters.contraction.outliers);
-    LaplacianContraction contraction(work.points(), parameters.contraction, progressRange(progress, 0, 25));
+    const ContractionInput work(input, parameters.resolution, parameters.contraction.outliers,
+                                progressRange(progress, 0, 10));
+    LaplacianContraction contraction(work.points(), parameters.contraction, progressRange(progress, 10, 25));
     contraction.iterateToEnd(progressRange(progress, 25, 90));
     SkeletonResult result = skeletonFromContraction(contraction, parameters.thinning, progressRange(progress, 90, 100));
     work.carryToAllPoints(result);

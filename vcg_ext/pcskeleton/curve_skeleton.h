@@ -110,7 +110,7 @@ public:
     // whole cloud are found first (`outliers`) and get no node: a grid keeps an isolated
     // point as surely as a surface patch, so in the subsample they would weigh far more.
     ContractionInput(const PointList& input, const ResolutionParameters& parameters,
-                     const OutlierParameters& outliers);
+                     const OutlierParameters& outliers, const ProgressCallback& progress = {});
 
     const PointList& points() const { return subsampled() ? kept_ : input_; }
     bool subsampled() const { return subsampled_; }
