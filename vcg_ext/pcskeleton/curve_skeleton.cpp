@@ -2,6 +2,7 @@
 
 #include "pcskeleton/analysis/node_recentering.h"
 #include "pcskeleton/analysis/skeleton_refinement.h"
+#include "pcskeleton/internal/machine_memory.h"
 #include "pcskeleton/internal/stopwatch.h"
 #include "pcskeleton/skeleton/skeleton_embedding.h"
 #include "pcskeleton/skeleton/skeleton_thinning.h"
@@ -10,8 +11,6 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
-
-#include <unistd.h>
 
 namespace pcskeleton {
 
@@ -24,14 +23,13 @@ namespace {
 // result's contracted positions and correspondence).
 constexpr double kBytesPerContractedPoint = 2700;
 constexpr double kBytesPerCarriedPoint = 135;
-constexpr double kShareOfMemoryUsable = 0.8;
 // Fewer contracted points than this leave too few per node to be worth suggesting.
 constexpr std::size_t kFewestUsefulContractedPoints = 2000;
 
 void refuseWorkLargerThanMemory(std::size_t points, const ResolutionParameters& parameters) {
     const double needed = estimatedPeakBytes(points, parameters.maxContractedPoints);
-    const double physical = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
-    const double limit = parameters.memoryLimit > 0 ? parameters.memoryLimit : kShareOfMemoryUsable * physical;
+    const double limit =
+        parameters.memoryLimit > 0 ? parameters.memoryLimit : kUsableShareOfMemory * physicalMemoryBytes();
     if (!(limit > 0) || needed <= limit) return;
     std::ostringstream text;
     text.precision(2);

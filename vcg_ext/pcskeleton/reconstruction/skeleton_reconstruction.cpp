@@ -1,11 +1,11 @@
 #include "pcskeleton/reconstruction/skeleton_reconstruction.h"
 
+#include "pcskeleton/internal/machine_memory.h"
 #include "pcskeleton/internal/stopwatch.h"
 #include "pcskeleton/reconstruction/field_fitting.h"
 #include "pcskeleton/skeleton/skeleton_distance.h"
 
 #include <Eigen/Geometry>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -115,8 +115,8 @@ FieldGrid domainGrid(const PointList& points, const SkeletonGraph& skeleton, int
 void refuseGridLargerThanMemory(const FieldGrid& grid) {
     constexpr double kBytesPerNode = 170;
     const double needed = kBytesPerNode * double(grid.size());
-    const double available = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
-    if (available > 0 && needed > 0.8 * available) {
+    const double available = physicalMemoryBytes();
+    if (available > 0 && needed > kUsableShareOfMemory * available) {
         std::ostringstream text;
         text.precision(2);
         text << "A grid of " << grid.nodes[0] << " x " << grid.nodes[1] << " x " << grid.nodes[2] << " nodes needs about "
