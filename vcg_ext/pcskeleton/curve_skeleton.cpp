@@ -169,17 +169,11 @@ void ContractionInput::carryToAllPoints(SkeletonResult& result) const {
         const int keeper = subsample_.keeperOf[i];
         skeleton.pointNode[i] = keeper < 0 ? -1 : keptNode[keeper];
     }
-    // Radii from every point: the mean distance to the node, as the embedding measures it.
-    std::vector<double> distanceSum(skeleton.nodeCount(), 0.0);
-    std::vector<std::size_t> members(skeleton.nodeCount(), 0);
-    for (std::size_t i = 0; i < input_.size(); ++i) {
-        const int node = skeleton.pointNode[i];
-        if (node < 0) continue;
-        distanceSum[node] += (input_[i] - skeleton.nodes[node]).norm();
-        ++members[node];
-    }
+    // Radii from every point, as the embedding measures them; a node without points (or
+    // with only one, at its own place) keeps the radius it has.
+    const std::vector<double> radius = meanDistanceToNodes(input_, skeleton.pointNode, skeleton.nodes);
     for (std::size_t n = 0; n < skeleton.nodeCount(); ++n) {
-        if (members[n] > 0 && distanceSum[n] > 0) skeleton.radii[n] = distanceSum[n] / double(members[n]);
+        if (radius[n] > 0) skeleton.radii[n] = radius[n];
     }
     PointList& contracted = result.contraction.contracted;
     if (!contracted.empty()) {

@@ -47,8 +47,7 @@ std::uint64_t spreadBits(std::uint64_t v) {
 // an order unrelated to space (merged views, shuffled exports): on a randomly ordered
 // 1M-point cloud this makes the k-nearest-neighbour queries several times faster.
 std::vector<std::size_t> zOrder(const PointList& points) {
-    Eigen::AlignedBox3d box;
-    for (const Point& p : points) box.extend(p);
+    const Eigen::AlignedBox3d box = boundingBox(points);
     const double extent = std::max(box.sizes().maxCoeff(), std::numeric_limits<double>::min());
     const double cells = double((1 << 21) - 1) / extent;
     std::vector<std::pair<std::uint64_t, std::size_t>> coded(points.size());

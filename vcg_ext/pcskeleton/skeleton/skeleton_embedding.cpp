@@ -12,10 +12,7 @@ SkeletonGraph embedSkeleton(const ThinnedGraph& graph, const NormalizedCloud& cl
     }
     for (std::size_t n = 0; n < nodeCount; ++n) centre[n] /= std::max(members[n], 1);
 
-    std::vector<double> radius(nodeCount, 0.0);
-    for (std::size_t i = 0; i < cloud.points.size(); ++i) {
-        radius[graph.owner[i]] += (cloud.points[i] - centre[graph.owner[i]]).norm();
-    }
+    const std::vector<double> radius = meanDistanceToNodes(cloud.points, graph.owner, centre);
 
     SkeletonGraph skeleton;
     skeleton.edges = graph.edges;
@@ -23,7 +20,7 @@ SkeletonGraph embedSkeleton(const ThinnedGraph& graph, const NormalizedCloud& cl
     skeleton.radii.reserve(nodeCount);
     for (std::size_t n = 0; n < nodeCount; ++n) {
         skeleton.nodes.push_back(cloud.toInputFrame(centre[n]));
-        skeleton.radii.push_back(radius[n] / std::max(members[n], 1) / cloud.scale);
+        skeleton.radii.push_back(radius[n] / cloud.scale);
     }
     skeleton.pointNode.reserve(cloud.inputSize());
     for (int unique : cloud.uniqueIndex) skeleton.pointNode.push_back(unique >= 0 ? graph.owner[unique] : -1);

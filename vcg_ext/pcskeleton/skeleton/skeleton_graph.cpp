@@ -48,6 +48,22 @@ std::string describe(const SkeletonTopology& t) {
            counted(std::size_t(t.tips), "tip") + ", " + counted(std::size_t(t.junctions), "junction");
 }
 
+std::vector<double> meanDistanceToNodes(const PointList& points, const std::vector<int>& pointNode,
+                                        const PointList& nodes) {
+    std::vector<double> distance(nodes.size(), 0.0);
+    std::vector<std::size_t> members(nodes.size(), 0);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const int node = pointNode[i];
+        if (node < 0) continue;
+        distance[node] += (points[i] - nodes[node]).norm();
+        ++members[node];
+    }
+    for (std::size_t n = 0; n < nodes.size(); ++n) {
+        if (members[n] > 0) distance[n] /= double(members[n]);
+    }
+    return distance;
+}
+
 std::vector<std::vector<int>> pointsOfNodes(const SkeletonGraph& graph) {
     std::vector<std::vector<int>> points(graph.nodeCount());
     for (std::size_t i = 0; i < graph.pointNode.size(); ++i) {

@@ -49,6 +49,11 @@ std::vector<std::vector<int>> adjacencyLists(std::size_t nodeCount, const std::v
 // Each node's points: the indices i with graph.pointNode[i] == node, ascending.
 std::vector<std::vector<int>> pointsOfNodes(const SkeletonGraph& graph);
 
+// For each node, the mean distance from its points to `nodes[n]` (0 for a node without
+// points): the radius the embedding gives it. pointNode[i] is point i's node, -1 for none.
+std::vector<double> meanDistanceToNodes(const PointList& points, const std::vector<int>& pointNode,
+                                        const PointList& nodes);
+
 // Sorts the edges, orders each edge's ends, drops duplicates and self-loops.
 void normalizeEdges(std::vector<Edge>& edges);
 
