@@ -1,13 +1,13 @@
 #include "edit_skeleton.h"
 
+#include "skeleton_drawing.h"
 #include "skeleton_panel.h"
 
-#include <filter_pcskeleton/meshlab_terms.h>
-#include <filter_pcskeleton/reconstruction_layer.h>
-#include <filter_pcskeleton/skeleton_layer.h>
+#include <meshlab_layers/meshlab_terms.h>
+#include <meshlab_layers/reconstruction_layer.h>
+#include <meshlab_layers/skeleton_layer.h>
 
 #include <GL/glew.h>
-#include <GL/glu.h>
 
 #include <meshlab/glarea.h>
 #include <wrap/gl/math.h>
@@ -17,9 +17,7 @@
 #include <QDockWidget>
 #include <QMainWindow>
 #include <QMessageBox>
-#include <QPainter>
 #include <QProgressDialog>
-#include <QSet>
 
 #include <algorithm>
 #include <cmath>
@@ -32,87 +30,7 @@ namespace {
 constexpr double kPickPixels = 10.0;   // how far from a node's centre a click still picks it
 constexpr int kDragStartPixels = 3;    // a press moving less than this is a click
 
-// Nodes are yellow and selected ones red: distinct on MeshLab's grey cloud, and what the
-// GUI test looks for in screenshots.
-const float kNodeColour[3] = {1.0f, 0.85f, 0.0f};
-const float kSelectedColour[3] = {1.0f, 0.1f, 0.1f};
-const float kBoneColour[3] = {0.15f, 0.35f, 1.0f};
-const float kSelectedBoneColour[3] = {1.0f, 0.55f, 0.0f};  // both ends selected
-const float kRadiusFieldColour[4] = {0.3f, 0.7f, 1.0f, 0.25f};
-
-// Draws with a GLU quadric, created once per frame.
-class Quadric {
-public:
-    Quadric() : q_(gluNewQuadric()) {}
-    ~Quadric() { gluDeleteQuadric(q_); }
-    void sphere(const Point& centre, double radius) const {
-        glPushMatrix();
-        glTranslated(centre.x(), centre.y(), centre.z());
-        gluSphere(q_, radius, 16, 12);
-        glPopMatrix();
-    }
-    // A truncated cone from `a` (radius ra) to `b` (radius rb).
-    void cone(const Point& a, double ra, const Point& b, double rb) const {
-        const Point axis = b - a;
-        const double length = axis.norm();
-        if (length <= 0.0) return;
-        const Point direction = axis / length;
-        const Point turnAxis = Point::UnitZ().cross(direction);
-        const double degrees = std::acos(std::clamp(direction.z(), -1.0, 1.0)) * 180.0 / M_PI;
-        glPushMatrix();
-        glTranslated(a.x(), a.y(), a.z());
-        if (turnAxis.norm() > 1e-9) glRotated(degrees, turnAxis.x(), turnAxis.y(), turnAxis.z());
-        else if (direction.z() < 0) glRotated(180.0, 1, 0, 0);
-        gluCylinder(q_, ra, rb, length, 16, 1);
-        glPopMatrix();
-    }
-
-private:
-    GLUquadric* q_;
-};
-
-QIcon skeletonIcon() {
-    QPixmap pixmap(32, 32);
-    pixmap.fill(Qt::transparent);
-    QPainter p(&pixmap);
-    p.setRenderHint(QPainter::Antialiasing);
-    p.setPen(QPen(QColor(40, 90, 255), 3));
-    const QPointF hip(16, 18), head(16, 4), leftFoot(7, 29), rightFoot(25, 29), hand(28, 10);
-    p.drawLine(hip, head);
-    p.drawLine(hip, leftFoot);
-    p.drawLine(hip, rightFoot);
-    p.drawLine(QPointF(16, 10), hand);
-    p.setPen(Qt::NoPen);
-    p.setBrush(QColor(255, 210, 0));
-    for (const QPointF& node : {hip, head, leftFoot, rightFoot, hand}) p.drawEllipse(node, 3.5, 3.5);
-    return QIcon(pixmap);
-}
-
 }  // namespace
-
-// --- ShortcutLease ---------------------------------------------------------------------
-
-void ShortcutLease::take(QWidget* window, const QList<QKeySequence>& keys) {
-    if (!window) return;
-    // Filter actions belong to their plugins, not to the window: they are found through the
-    // menus and toolbars that show them.
-    QSet<QAction*> actions;
-    for (QAction* action : window->findChildren<QAction*>()) actions.insert(action);
-    for (QWidget* widget : window->findChildren<QWidget*>()) {
-        for (QAction* action : widget->actions()) actions.insert(action);
-    }
-    for (QAction* action : actions) {
-        if (!action->shortcut().isEmpty() && keys.contains(action->shortcut())) {
-            taken_.append({action, action->shortcut()});
-            action->setShortcut(QKeySequence());
-        }
-    }
-}
-
-void ShortcutLease::giveBack() {
-    for (const auto& [action, key] : taken_) action->setShortcut(key);
-    taken_.clear();
-}
 
 // --- EditSkeletonTool ------------------------------------------------------------------
 
@@ -528,91 +446,12 @@ void EditSkeletonTool::Decorate(MeshModel&, GLArea*, QPainter*) {
     // The skeleton lies inside the cloud: it is drawn over it, or it could not be seen.
     glClear(GL_DEPTH_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);
-    drawBones(nodes);
-    drawNodes(nodes);
-    if (panel_ && panel_->radiusFieldShown()) drawRadiusField(nodes);
+    drawBones(editor_->graph(), nodes, selected_);
+    drawNodes(nodes, selected_, markerSize());
+    if (panel_ && panel_->radiusFieldShown()) drawRadiusField(editor_->graph(), nodes);
     glPopAttrib();
     glPopMatrix();
-    if (gesture_ == Gesture::RubberBand) drawRubberBand();
+    if (gesture_ == Gesture::RubberBand) drawRubberBand(*area_, pressedAt_, mouseAt_);
 }
-
-void EditSkeletonTool::drawBones(const PointList& nodes) const {
-    glDisable(GL_LIGHTING);
-    glLineWidth(3.0f);
-    glBegin(GL_LINES);
-    for (const Edge& e : editor_->graph().edges) {
-        if (selected_[e[0]] && selected_[e[1]]) glColor3fv(kSelectedBoneColour);
-        else glColor3fv(kBoneColour);
-        glVertex3dv(nodes[e[0]].data());
-        glVertex3dv(nodes[e[1]].data());
-    }
-    glEnd();
-}
-
-void EditSkeletonTool::drawNodes(const PointList& nodes) const {
-    glEnable(GL_LIGHTING);
-    glEnable(GL_COLOR_MATERIAL);
-    glColorMaterial(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
-    glEnable(GL_NORMALIZE);
-    const Quadric quadric;
-    for (std::size_t n = 0; n < nodes.size(); ++n) {
-        glColor3fv(selected_[n] ? kSelectedColour : kNodeColour);
-        quadric.sphere(nodes[n], markerSize() * (selected_[n] ? 1.3 : 1.0));
-    }
-}
-
-void EditSkeletonTool::drawRadiusField(const PointList& nodes) const {
-    const SkeletonGraph& g = editor_->graph();
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    glDepthMask(GL_FALSE);
-    glEnable(GL_LIGHTING);
-    glEnable(GL_COLOR_MATERIAL);
-    glColor4fv(kRadiusFieldColour);
-    const Quadric quadric;
-    for (const Edge& e : g.edges) quadric.cone(nodes[e[0]], g.radii[e[0]], nodes[e[1]], g.radii[e[1]]);
-    for (std::size_t n = 0; n < nodes.size(); ++n) quadric.sphere(nodes[n], g.radii[n]);
-}
-
-void EditSkeletonTool::drawRubberBand() const {
-    const double ratio = area_->devicePixelRatio();
-    const auto glY = [&](int y) { return (area_->height() - y) * ratio; };
-    glPushAttrib(GL_ALL_ATTRIB_BITS);
-    glMatrixMode(GL_PROJECTION);
-    glPushMatrix();
-    glLoadIdentity();
-    glOrtho(0, area_->width() * ratio, 0, area_->height() * ratio, -1, 1);
-    glMatrixMode(GL_MODELVIEW);
-    glPushMatrix();
-    glLoadIdentity();
-    glDisable(GL_LIGHTING);
-    glDisable(GL_DEPTH_TEST);
-    glLineWidth(1.5f);
-    glColor3f(1.0f, 1.0f, 1.0f);
-    glBegin(GL_LINE_LOOP);
-    glVertex2d(pressedAt_.x() * ratio, glY(pressedAt_.y()));
-    glVertex2d(mouseAt_.x() * ratio, glY(pressedAt_.y()));
-    glVertex2d(mouseAt_.x() * ratio, glY(mouseAt_.y()));
-    glVertex2d(pressedAt_.x() * ratio, glY(mouseAt_.y()));
-    glEnd();
-    glPopMatrix();
-    glMatrixMode(GL_PROJECTION);
-    glPopMatrix();
-    glMatrixMode(GL_MODELVIEW);
-    glPopAttrib();
-}
-
-// --- Factory ---------------------------------------------------------------------------
-
-EditSkeletonFactory::EditSkeletonFactory() {
-    editSkeleton_ = new QAction(skeletonIcon(), "Edit Skeleton", this);
-    editSkeleton_->setCheckable(true);
-}
-
-MeshEditInterface* EditSkeletonFactory::getMeshEditInterface(QAction* action) {
-    return action == editSkeleton_ ? new EditSkeletonTool() : nullptr;
-}
-
-QString EditSkeletonFactory::getEditToolDescription(QAction*) { return EditSkeletonTool::Info(); }
 
 }  // namespace pcskeleton::edit

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "screen_projection.h"
+#include "shortcut_lease.h"
 
 #include <common/interfaces.h>
 
@@ -20,17 +21,6 @@ class QAction;
 namespace pcskeleton::edit {
 
 class SkeletonPanel;
-
-// While the tool runs, keys it needs are taken from MeshLab's application-wide shortcuts
-// and given back when it ends.
-class ShortcutLease {
-public:
-    void take(QWidget* window, const QList<QKeySequence>& keys);
-    void giveBack();
-
-private:
-    QList<QPair<QAction*, QKeySequence>> taken_;
-};
 
 class EditSkeletonTool : public QObject, public MeshEditInterface {
     Q_OBJECT
@@ -72,11 +62,6 @@ private:
     Eigen::Vector2d toGlWindow(const QPoint& widgetPoint) const;
     double markerSize() const;
 
-    void drawBones(const PointList& nodes) const;
-    void drawNodes(const PointList& nodes) const;
-    void drawRadiusField(const PointList& nodes) const;
-    void drawRubberBand() const;
-
     MeshModel* layer_ = nullptr;
     GLArea* area_ = nullptr;
     MLSceneGLSharedDataContext* context_ = nullptr;
@@ -91,21 +76,6 @@ private:
     QPoint pressedAt_, mouseAt_;
     int pressedNode_ = -1;
     Point dragOffset_ = Point::Zero();
-};
-
-class EditSkeletonFactory : public QObject, public MeshEditInterfaceFactory {
-    Q_OBJECT
-    MESHLAB_PLUGIN_IID_EXPORTER(MESH_EDIT_INTERFACE_FACTORY_IID)
-    Q_INTERFACES(MeshEditInterfaceFactory)
-
-public:
-    EditSkeletonFactory();
-    QList<QAction*> actions() const override { return {editSkeleton_}; }
-    MeshEditInterface* getMeshEditInterface(QAction* action) override;
-    QString getEditToolDescription(QAction* action) override;
-
-private:
-    QAction* editSkeleton_;
 };
 
 }  // namespace pcskeleton::edit

@@ -1,8 +1,8 @@
 #include "filter_pcskeleton.h"
 
-#include "meshlab_terms.h"
-#include "reconstruction_layer.h"
-#include "skeleton_layer.h"
+#include <meshlab_layers/meshlab_terms.h>
+#include <meshlab_layers/reconstruction_layer.h>
+#include <meshlab_layers/skeleton_layer.h>
 
 #include <pcskeleton/curve_skeleton.h>
 #include <pcskeleton/editing/skeleton_editing.h>

@@ -1,0 +1,42 @@
+#include "edit_skeleton_factory.h"
+
+#include "edit_skeleton.h"
+
+#include <QPainter>
+
+namespace pcskeleton::edit {
+
+namespace {
+
+// A stick figure: yellow nodes joined by blue bones, the tool's look.
+QIcon skeletonIcon() {
+    QPixmap pixmap(32, 32);
+    pixmap.fill(Qt::transparent);
+    QPainter p(&pixmap);
+    p.setRenderHint(QPainter::Antialiasing);
+    p.setPen(QPen(QColor(40, 90, 255), 3));
+    const QPointF hip(16, 18), head(16, 4), leftFoot(7, 29), rightFoot(25, 29), hand(28, 10);
+    p.drawLine(hip, head);
+    p.drawLine(hip, leftFoot);
+    p.drawLine(hip, rightFoot);
+    p.drawLine(QPointF(16, 10), hand);
+    p.setPen(Qt::NoPen);
+    p.setBrush(QColor(255, 210, 0));
+    for (const QPointF& node : {hip, head, leftFoot, rightFoot, hand}) p.drawEllipse(node, 3.5, 3.5);
+    return QIcon(pixmap);
+}
+
+}  // namespace
+
+EditSkeletonFactory::EditSkeletonFactory() {
+    editSkeleton_ = new QAction(skeletonIcon(), "Edit Skeleton", this);
+    editSkeleton_->setCheckable(true);
+}
+
+MeshEditInterface* EditSkeletonFactory::getMeshEditInterface(QAction* action) {
+    return action == editSkeleton_ ? new EditSkeletonTool() : nullptr;
+}
+
+QString EditSkeletonFactory::getEditToolDescription(QAction*) { return EditSkeletonTool::Info(); }
+
+}  // namespace pcskeleton::edit
