@@ -34,12 +34,12 @@ constexpr int kDragStartPixels = 3;    // a press moving less than this is a cli
 
 // --- EditSkeletonTool ------------------------------------------------------------------
 
-const QString EditSkeletonTool::Info() {
+QString EditSkeletonTool::info() {
     return "Edit a curve skeleton by hand: select, move, delete, connect, merge, split nodes and change their "
            "radius, with undo.";
 }
 
-bool EditSkeletonTool::StartEdit(MeshModel& m, GLArea* area, MLSceneGLSharedDataContext* context) {
+bool EditSkeletonTool::start(MeshModel& m, GLArea* area, MLSceneGLSharedDataContext* context) {
     const QString reason = meshlab::notASkeletonReason(m);
     if (!reason.isEmpty()) {
         // MeshLab drops log lines written here; a message is the only way to say why.
@@ -99,7 +99,7 @@ bool EditSkeletonTool::StartEdit(MeshModel& m, GLArea* area, MLSceneGLSharedData
     return true;
 }
 
-void EditSkeletonTool::EndEdit(MeshModel&, GLArea*, MLSceneGLSharedDataContext*) {
+void EditSkeletonTool::end() {
     shortcuts_.giveBack();
     if (panel_) panel_->deleteLater();
     panel_ = nullptr;
@@ -427,7 +427,7 @@ void EditSkeletonTool::wheelEvent(QWheelEvent* event, MeshModel&, GLArea* area) 
 
 // --- Drawing ---------------------------------------------------------------------------
 
-void EditSkeletonTool::Decorate(MeshModel&, GLArea*, QPainter*) {
+void EditSkeletonTool::draw() {
     if (!editor_ || !layer_) return;
     glPushMatrix();
     glMultMatrix(layer_->cm.Tr);

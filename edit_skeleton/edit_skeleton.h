@@ -7,7 +7,7 @@
 #include "screen_projection.h"
 #include "shortcut_lease.h"
 
-#include <common/interfaces.h>
+#include <meshlab_layers/meshlab_compat.h>
 
 #include <pcskeleton/editing/skeleton_editing.h>
 
@@ -22,14 +22,25 @@ namespace pcskeleton::edit {
 
 class SkeletonPanel;
 
-class EditSkeletonTool : public QObject, public MeshEditInterface {
+class EditSkeletonTool : public QObject, public meshlab::EditToolBase {
     Q_OBJECT
 public:
-    static const QString Info();
+    static QString info();
 
-    bool StartEdit(MeshModel& m, GLArea* area, MLSceneGLSharedDataContext* context) override;
-    void EndEdit(MeshModel& m, GLArea* area, MLSceneGLSharedDataContext* context) override;
-    void Decorate(MeshModel& m, GLArea* area, QPainter* painter) override;
+    // MeshLab's entry points, renamed in 2021.05.
+#if PCSKELETON_MESHLAB_2021_API
+    bool startEdit(MeshModel& m, GLArea* area, MLSceneGLSharedDataContext* context) override {
+        return start(m, area, context);
+    }
+    void endEdit(MeshModel&, GLArea*, MLSceneGLSharedDataContext*) override { end(); }
+    void decorate(MeshModel&, GLArea*, QPainter*) override { draw(); }
+#else
+    bool StartEdit(MeshModel& m, GLArea* area, MLSceneGLSharedDataContext* context) override {
+        return start(m, area, context);
+    }
+    void EndEdit(MeshModel&, GLArea*, MLSceneGLSharedDataContext*) override { end(); }
+    void Decorate(MeshModel&, GLArea*, QPainter*) override { draw(); }
+#endif
     void mousePressEvent(QMouseEvent* event, MeshModel& m, GLArea* area) override;
     void mouseMoveEvent(QMouseEvent* event, MeshModel& m, GLArea* area) override;
     void mouseReleaseEvent(QMouseEvent* event, MeshModel& m, GLArea* area) override;
@@ -37,6 +48,10 @@ public:
     void wheelEvent(QWheelEvent* event, MeshModel& m, GLArea* area) override;
 
 private:
+    bool start(MeshModel& m, GLArea* area, MLSceneGLSharedDataContext* context);
+    void end();
+    void draw();
+
     enum class Gesture { None, PressedOnNode, Moving, RubberBand, Rotating };
 
     // Runs an operation of the editor; on refusal shows why and changes nothing.

@@ -4,8 +4,6 @@
 
 #include <QPainter>
 
-namespace pcskeleton::edit {
-
 namespace {
 
 // A stick figure: yellow nodes joined by blue bones, the tool's look.
@@ -31,12 +29,17 @@ QIcon skeletonIcon() {
 EditSkeletonFactory::EditSkeletonFactory() {
     editSkeleton_ = new QAction(skeletonIcon(), "Edit Skeleton", this);
     editSkeleton_->setCheckable(true);
+#if PCSKELETON_MESHLAB_2021_API
+    actionList.push_back(editSkeleton_);  // what the base class's actions() lists
+#endif
 }
 
-MeshEditInterface* EditSkeletonFactory::getMeshEditInterface(QAction* action) {
-    return action == editSkeleton_ ? new EditSkeletonTool() : nullptr;
+pcskeleton::meshlab::EditToolBase* EditSkeletonFactory::makeTool(const QAction* action) const {
+    return action == editSkeleton_ ? new pcskeleton::edit::EditSkeletonTool() : nullptr;
 }
 
-QString EditSkeletonFactory::getEditToolDescription(QAction*) { return EditSkeletonTool::Info(); }
-
-}  // namespace pcskeleton::edit
+#if PCSKELETON_MESHLAB_2021_API
+QString EditSkeletonFactory::getEditToolDescription(const QAction*) { return pcskeleton::edit::EditSkeletonTool::info(); }
+#else
+QString EditSkeletonFactory::getEditToolDescription(QAction*) { return pcskeleton::edit::EditSkeletonTool::info(); }
+#endif

@@ -201,7 +201,7 @@ pcskeleton::ProgressCallback progressOf(vcg::CallBackPos* cb) {
 // The layer the contracted layer came from: the one whose label it extends, else any other.
 MeshModel* likelySourceOf(MeshDocument& md, MeshModel* contracted) {
     MeshModel* fallback = nullptr;
-    for (MeshModel* m : md.meshList) {
+    for (MeshModel* m : layersOf(md)) {
         if (m == contracted) continue;
         if (contracted && derivedLabel(*m, "contracted") == contracted->label()) return m;
         if (!fallback) fallback = m;
@@ -235,7 +235,7 @@ QString defaultSkeletonFileName(MeshDocument& md, const QString& extension = "pl
             if (folder.isEmpty() && m && !m->fullName().isEmpty()) folder = QFileInfo(m->fullName()).absolutePath();
         }
     }
-    for (const MeshModel* m : md.meshList) {
+    for (const MeshModel* m : layersOf(md)) {
         if (folder.isEmpty() && !m->fullName().isEmpty()) folder = QFileInfo(m->fullName()).absolutePath();
     }
     // Never propose an existing file, above all the one the skeleton was opened from.
@@ -250,15 +250,15 @@ QString defaultSkeletonFileName(MeshDocument& md, const QString& extension = "pl
 }  // namespace
 
 FilterPCSkeletonPlugin::FilterPCSkeletonPlugin() {
-    typeList << FP_CONTRACT_POINT_CLOUD << FP_COMPUTE_SKELETON << FP_SKELETON_FROM_CONTRACTED << FP_EXPORT_SKELETON
-             << FP_DELETE_SELECTED_NODES << FP_CONNECT_SELECTED_NODES << FP_MERGE_SELECTED_NODES
-             << FP_SET_RADIUS_OF_SELECTED_NODES << FP_RECONSTRUCT_FROM_SKELETON;
-    for (FilterIDType type : typeList) actionList << new QAction(filterName(type), this);
+    typeList = {FP_CONTRACT_POINT_CLOUD,          FP_COMPUTE_SKELETON,       FP_SKELETON_FROM_CONTRACTED,
+                FP_EXPORT_SKELETON,               FP_DELETE_SELECTED_NODES,  FP_CONNECT_SELECTED_NODES,
+                FP_MERGE_SELECTED_NODES,          FP_SET_RADIUS_OF_SELECTED_NODES, FP_RECONSTRUCT_FROM_SKELETON};
+    for (int type : typeList) actionList.push_back(new QAction(filterName(type), this));
 }
 
 QString FilterPCSkeletonPlugin::pluginName() const { return "FilterPCSkeleton"; }
 
-QString FilterPCSkeletonPlugin::filterName(FilterIDType filter) const {
+QString FilterPCSkeletonPlugin::filterName(int filter) const {
     switch (filter) {
         case FP_CONTRACT_POINT_CLOUD: return "Contract Point Cloud (Laplacian)";
         case FP_COMPUTE_SKELETON: return "Compute Curve Skeleton (Laplacian Contraction)";
@@ -273,7 +273,7 @@ QString FilterPCSkeletonPlugin::filterName(FilterIDType filter) const {
     return {};
 }
 
-QString FilterPCSkeletonPlugin::filterInfo(FilterIDType filter) const {
+QString FilterPCSkeletonPlugin::filterInfo(int filter) const {
     switch (filter) {
         case FP_CONTRACT_POINT_CLOUD:
             return QString(
@@ -338,15 +338,13 @@ QString FilterPCSkeletonPlugin::filterInfo(FilterIDType filter) const {
     return {};
 }
 
-MeshFilterInterface::FilterClass FilterPCSkeletonPlugin::getClass(QAction* action) {
+FilterPCSkeletonPlugin::FilterClass FilterPCSkeletonPlugin::filterClass(int filter) const {
     // Also listed with MeshLab's other surface reconstructions.
-    return ID(action) == FP_RECONSTRUCT_FROM_SKELETON ? FilterClass(PointSet | Remeshing) : PointSet;
+    return filter == FP_RECONSTRUCT_FROM_SKELETON ? FilterClass(PointSet | Remeshing) : PointSet;
 }
 
-int FilterPCSkeletonPlugin::getPreConditions(QAction*) const { return MeshModel::MM_VERTCOORD; }
-
-int FilterPCSkeletonPlugin::postCondition(QAction* action) const {
-    switch (ID(action)) {
+int FilterPCSkeletonPlugin::changesOf(int filter) const {
+    switch (filter) {
         case FP_DELETE_SELECTED_NODES:
         case FP_CONNECT_SELECTED_NODES:
         case FP_MERGE_SELECTED_NODES:
@@ -357,12 +355,36 @@ int FilterPCSkeletonPlugin::postCondition(QAction* action) const {
     return MeshModel::MM_NONE;  // the other filters add layers and change none
 }
 
-MeshFilterInterface::FILTER_ARITY FilterPCSkeletonPlugin::filterArity(QAction* action) const {
-    return ID(action) == FP_SKELETON_FROM_CONTRACTED || ID(action) == FP_RECONSTRUCT_FROM_SKELETON ? FIXED : SINGLE_MESH;
+bool FilterPCSkeletonPlugin::takesTwoLayers(int filter) const {
+    return filter == FP_SKELETON_FROM_CONTRACTED || filter == FP_RECONSTRUCT_FROM_SKELETON;
 }
 
-void FilterPCSkeletonPlugin::initParameterSet(QAction* action, MeshDocument& md, RichParameterList& parameters) {
-    switch (ID(action)) {
+#if PCSKELETON_MESHLAB_2021_API
+RichParameterList FilterPCSkeletonPlugin::initParameterList(const QAction* action, const MeshDocument& md) {
+    RichParameterList parameters;
+    // The defaults only read the document; MeshLab's layer parameter keeps a pointer to it.
+    addParameters(ID(action), const_cast<MeshDocument&>(md), parameters);
+    return parameters;
+}
+
+std::map<std::string, QVariant> FilterPCSkeletonPlugin::applyFilter(const QAction* action,
+                                                                    const RichParameterList& parameters,
+                                                                    MeshDocument& md, unsigned int&,
+                                                                    vcg::CallBackPos* cb) {
+    if (!apply(ID(action), md, parameters, cb)) throw MLException(failure_);
+    return {};
+}
+#else
+bool FilterPCSkeletonPlugin::applyFilter(QAction* action, MeshDocument& md, const RichParameterList& parameters,
+                                         vcg::CallBackPos* cb) {
+    const bool done = apply(ID(action), md, parameters, cb);
+    if (!done) errorMessage = failure_;
+    return done;
+}
+#endif
+
+void FilterPCSkeletonPlugin::addParameters(int filter, MeshDocument& md, RichParameterList& parameters) {
+    switch (filter) {
         case FP_CONTRACT_POINT_CLOUD:
             addContractionParameters(parameters);
             parameters.addParam(RichInt("iterationsToRun", 0, "Iterations to run",
@@ -387,7 +409,7 @@ void FilterPCSkeletonPlugin::initParameterSet(QAction* action, MeshDocument& md,
                 "extension, stretched-link limit or subsample, whatever is set above. For comparison with the paper and other implementations of it."));
             break;
         case FP_SKELETON_FROM_CONTRACTED:
-            parameters.addParam(RichMesh("sourceLayer", likelySourceOf(md, md.mm()), &md, "Original points",
+            parameters.addParam(layerParameter("sourceLayer", likelySourceOf(md, md.mm()), md, "Original points",
                 "The layer that was contracted: its points give the 1-rings, the node positions and the radii."));
             parameters.addParam(RichInt("k", 0, parameterLabel(Parameter::NeighbourCount),
                 QString(kNeighbourHelp) + " Use the value the contraction used."));
@@ -395,7 +417,7 @@ void FilterPCSkeletonPlugin::initParameterSet(QAction* action, MeshDocument& md,
             addThinningParameters(parameters);
             break;
         case FP_EXPORT_SKELETON: {
-            parameters.addParam(RichSaveFile("fileName", defaultSkeletonFileName(md),
+            parameters.addParam(FileSaveParameter("fileName", defaultSkeletonFileName(md),
                 "Skeleton (*.ply *.obj *.cg)", "File",
                 "Where to write the skeleton; .ply, .obj or .cg. Empty, or only an extension such as .obj (for "
                 "scripts): next to the points' file, named after the layer (e.g. elephant_skeleton.ply), never "
@@ -411,9 +433,9 @@ void FilterPCSkeletonPlugin::initParameterSet(QAction* action, MeshDocument& md,
                 "selected nodes). Larger makes the reconstructed surface thicker there."));
             break;
         case FP_RECONSTRUCT_FROM_SKELETON: {
-            parameters.addParam(RichMesh("pointsLayer", defaultPointsLayer(md), &md, "Points",
+            parameters.addParam(layerParameter("pointsLayer", defaultPointsLayer(md), md, "Points",
                 "The scan: the surface passes through its points. Faces, if any, are ignored."));
-            parameters.addParam(RichMesh("skeletonLayer", defaultSkeletonLayer(md), &md, "Skeleton",
+            parameters.addParam(layerParameter("skeletonLayer", defaultSkeletonLayer(md), md, "Skeleton",
                 "The curve skeleton of these points, edited or not: its bones and node radii say where the inside "
                 "is, and its loops become the surface's handles."));
             addReconstructionParameters(parameters);
@@ -422,28 +444,29 @@ void FilterPCSkeletonPlugin::initParameterSet(QAction* action, MeshDocument& md,
     }
 }
 
-bool FilterPCSkeletonPlugin::applyFilter(QAction* action, MeshDocument& md, const RichParameterList& parameters,
-                                         vcg::CallBackPos* cb) {
+bool FilterPCSkeletonPlugin::apply(int filter, MeshDocument& md, const RichParameterList& parameters,
+                                   vcg::CallBackPos* cb) {
+    failure_.clear();
     bool done = false;
     try {
-        done = runFilter(ID(action), md, parameters, cb);
+        done = runFilter(filter, md, parameters, cb);
     } catch (const pcskeleton::InvalidInput& e) {
-        errorMessage = describeForMeshLab(e.problem());
+        failure_ = describeForMeshLab(e.problem());
     } catch (const std::bad_alloc&) {
-        errorMessage = "Out of memory: try a subsampled cloud (Filters > Sampling > Point Cloud Simplification).";
+        failure_ = "Out of memory: try a subsampled cloud (Filters > Sampling > Point Cloud Simplification).";
     } catch (const std::exception& e) {
-        errorMessage = QString("Internal error: ") + e.what();
+        failure_ = QString("Internal error: ") + e.what();
     }
     // meshlabserver prints the log but not the error message: without this, a failing
     // script would only say "Problem with filter".
-    if (!done) Log(GLLogStream::WARNING, "%s", qUtf8Printable(errorMessage));
+    if (!done) writeLog(*this, GLLogStream::WARNING, "%s", qUtf8Printable(failure_));
     return done;
 }
 
 bool FilterPCSkeletonPlugin::runFilter(int filter, MeshDocument& md, const RichParameterList& parameters,
                                        vcg::CallBackPos* cb) {
     if (md.mm() == nullptr) {
-        errorMessage = "No layer is selected.";
+        failure_ = "No layer is selected.";
         return false;
     }
     switch (filter) {
@@ -457,7 +480,7 @@ bool FilterPCSkeletonPlugin::runFilter(int filter, MeshDocument& md, const RichP
         case FP_SET_RADIUS_OF_SELECTED_NODES: return editSelectedNodes(filter, md, parameters);
         case FP_RECONSTRUCT_FROM_SKELETON: return reconstructFromSkeleton(md, parameters, cb);
     }
-    errorMessage = "Unknown filter.";
+    failure_ = "Unknown filter.";
     return false;
 }
 
@@ -467,12 +490,12 @@ int FilterPCSkeletonPlugin::contract(pcskeleton::LaplacianContraction& contracti
     while (!contraction.finished() && done < limit) {
         const pcskeleton::IterationReport r = contraction.iterate();
         ++done;
-        Log("  iteration %d: mean 1-ring size %.4f of initial, W_L = %.4g, %.2f s", r.iteration, r.extentRatio,
+        writeLog(*this, "  iteration %d: mean 1-ring size %.4f of initial, W_L = %.4g, %.2f s", r.iteration, r.extentRatio,
             r.contractionWeight, r.seconds);
         afterIteration(done);
     }
     if (contraction.stopReason() == pcskeleton::StopReason::NumericalFailure) {
-        Log(GLLogStream::WARNING, "The last iteration failed numerically; the result uses the last good positions.");
+        writeLog(*this, GLLogStream::WARNING, "The last iteration failed numerically; the result uses the last good positions.");
     }
     return done;
 }
@@ -480,7 +503,7 @@ int FilterPCSkeletonPlugin::contract(pcskeleton::LaplacianContraction& contracti
 void FilterPCSkeletonPlugin::logContractionStart(const MeshModel& source,
                                                  const pcskeleton::LaplacianContraction& contraction,
                                                  std::size_t points) {
-    Log("Contraction of '%s': %zu points, k = %d, W_L0 = %.4g; 1-rings built in %.2f s",
+    writeLog(*this, "Contraction of '%s': %zu points, k = %d, W_L0 = %.4g; 1-rings built in %.2f s",
         qUtf8Printable(source.label()), points, contraction.neighbourCount(), contraction.initialContractionWeight(),
         contraction.neighbourhoodSeconds());
 }
@@ -493,7 +516,7 @@ bool FilterPCSkeletonPlugin::contractPointCloud(MeshDocument& md, const RichPara
     const int iterationsToRun = parameters.getInt("iterationsToRun");
     const bool keepEveryIteration = parameters.getBool("keepEveryIteration");
     if (iterationsToRun < 0) {
-        errorMessage = "Iterations to run must be 0 (until contraction stops) or positive.";
+        failure_ = "Iterations to run must be 0 (until contraction stops) or positive.";
         return false;
     }
     const pcskeleton::ProgressCallback progress = progressOf(cb);
@@ -514,7 +537,7 @@ bool FilterPCSkeletonPlugin::contractPointCloud(MeshDocument& md, const RichPara
     addPointLayer(md, source, input, contraction.contractedPoints(), label);
     const QString stop = contraction.finished() ? QString::fromStdString(pcskeleton::describe(contraction.stopReason()))
                                                 : QString("paused after the requested %1 iteration(s)").arg(done);
-    Log("Contraction: %d iteration(s), %s. New layer '%s'.", done, qUtf8Printable(stop), qUtf8Printable(label));
+    writeLog(*this, "Contraction: %d iteration(s), %s. New layer '%s'.", done, qUtf8Printable(stop), qUtf8Printable(label));
     return true;
 }
 
@@ -523,14 +546,14 @@ void FilterPCSkeletonPlugin::addSkeletonLayers(MeshDocument& md, const MeshModel
     if (addSegments) addSegmentsLayer(md, source, input, result.skeleton, derivedLabel(source, "segments"));
     const QString label = derivedLabel(source, "skeleton");
     addSkeletonLayer(md, source, input, result.skeleton, label);
-    Log("Skeleton '%s', quality report:", qUtf8Printable(label));
+    writeLog(*this, "Skeleton '%s', quality report:", qUtf8Printable(label));
     logLines(QString::fromStdString(pcskeleton::describeFindings(result.quality)), GLLogStream::FILTER);
     const std::vector<pcskeleton::QualityWarning> warnings = result.quality.warnings();
     if (warnings.empty()) logLines("No warnings.", GLLogStream::FILTER);
     for (const pcskeleton::QualityWarning& w : warnings)
         logLines("Warning: " + describeForMeshLab(w.problem), GLLogStream::WARNING);
     const pcskeleton::StageSeconds& seconds = result.seconds;
-    Log("Time: subsampling %.2f s, 1-rings %.2f s, contraction %.2f s, thinning %.2f s, embedding %.2f s, "
+    writeLog(*this, "Time: subsampling %.2f s, 1-rings %.2f s, contraction %.2f s, thinning %.2f s, embedding %.2f s, "
         "finishing %.2f s.", seconds.subsampling, seconds.neighbourhoods, seconds.contraction, seconds.thinning, seconds.embedding, seconds.finishing);
 }
 
@@ -549,7 +572,7 @@ bool FilterPCSkeletonPlugin::computeSkeleton(MeshDocument& md, const RichParamet
     const pcskeleton::ContractionInput work(input.points, pipeline.resolution, settings.outliers,
                                             pcskeleton::progressRange(progress, 0, 10));
     if (work.subsampled()) {
-        Log("Multi-resolution: %zu of the %zu points contracted (one per cube of side %.4g); every point gets the node "
+        writeLog(*this, "Multi-resolution: %zu of the %zu points contracted (one per cube of side %.4g); every point gets the node "
             "of its cube's point.", work.points().size(), input.points.size(), work.subsample().cellSize);
     }
     pcskeleton::LaplacianContraction contraction(work.points(), settings, pcskeleton::progressRange(progress, 10, 25));
@@ -557,7 +580,7 @@ bool FilterPCSkeletonPlugin::computeSkeleton(MeshDocument& md, const RichParamet
     const int done = contract(contraction, settings.maxIterations, [&](int iteration) {
         pcskeleton::report(progress, 25 + 65 * iteration / settings.maxIterations, "Contracting");
     });
-    Log("Contraction: %d iteration(s), %s.", done, pcskeleton::describe(contraction.stopReason()).c_str());
+    writeLog(*this, "Contraction: %d iteration(s), %s.", done, pcskeleton::describe(contraction.stopReason()).c_str());
 
     pcskeleton::SkeletonResult result =
         pcskeleton::skeletonFromContraction(contraction, thinning, pcskeleton::progressRange(progress, 90, 100));
@@ -571,7 +594,7 @@ bool FilterPCSkeletonPlugin::computeSkeleton(MeshDocument& md, const RichParamet
 
 bool FilterPCSkeletonPlugin::skeletonFromContracted(MeshDocument& md, const RichParameterList& parameters,
                                                     vcg::CallBackPos* cb) {
-    MeshModel* source = parameters.getMesh("sourceLayer");
+    MeshModel* source = layerParameterValue(md, parameters, "sourceLayer");
     LayerPoints input;
     const pcskeleton::PointList contracted = readContractedLayer(*md.mm(), source, input);
     const pcskeleton::SkeletonResult result = pcskeleton::skeletonFromContractedPoints(
@@ -584,7 +607,7 @@ bool FilterPCSkeletonPlugin::exportSkeleton(MeshDocument& md, const RichParamete
     const MeshModel& layer = *md.mm();
     const QString reason = notASkeletonReason(layer);
     if (!reason.isEmpty()) {
-        errorMessage = reason;
+        failure_ = reason;
         return false;
     }
     QString fileName = parameters.getSaveFileName("fileName");
@@ -592,24 +615,24 @@ bool FilterPCSkeletonPlugin::exportSkeleton(MeshDocument& md, const RichParamete
         fileName = defaultSkeletonFileName(md, fileName.isEmpty() ? QString("ply") : fileName.mid(1).toLower());
     }
     if (!pcskeleton::isSkeletonFileName(fileName.toStdString())) {
-        errorMessage = QString("Cannot write '%1': the file name must end in .ply, .obj or .cg.").arg(fileName);
+        failure_ = QString("Cannot write '%1': the file name must end in .ply, .obj or .cg.").arg(fileName);
         return false;
     }
-    for (const MeshModel* m : md.meshList) {
+    for (const MeshModel* m : layersOf(md)) {
         if (!m->fullName().isEmpty() && pcskeleton::sameFile(m->fullName().toStdString(), fileName.toStdString())) {
-            errorMessage = QString("Cannot write '%1': it is the file of the open layer '%2', which is never "
+            failure_ = QString("Cannot write '%1': it is the file of the open layer '%2', which is never "
                                    "overwritten. Choose another name.").arg(fileName, m->label());
             return false;
         }
     }
     if (QFileInfo::exists(fileName) && !parameters.getBool("overwrite")) {
-        errorMessage = QString("Cannot write '%1': the file exists already. Choose another name, or tick "
+        failure_ = QString("Cannot write '%1': the file exists already. Choose another name, or tick "
                                "'Replace an existing file'.").arg(fileName);
         return false;
     }
     const pcskeleton::SkeletonGraph skeleton = readSkeletonLayer(layer);
     pcskeleton::writeSkeleton(skeleton, fileName.toStdString());
-    Log("Skeleton '%s' written to '%s': %s.", qUtf8Printable(layer.label()),
+    writeLog(*this, "Skeleton '%s' written to '%s': %s.", qUtf8Printable(layer.label()),
         qUtf8Printable(QFileInfo(fileName).absoluteFilePath()),
         pcskeleton::describe(pcskeleton::analyseTopology(skeleton)).c_str());
     return true;
@@ -619,14 +642,14 @@ bool FilterPCSkeletonPlugin::editSelectedNodes(int filter, MeshDocument& md, con
     MeshModel& layer = *md.mm();
     const QString reason = notASkeletonReason(layer);
     if (!reason.isEmpty()) {
-        errorMessage = reason;
+        failure_ = reason;
         return false;
     }
     pcskeleton::SkeletonGraph skeleton = readSkeletonLayer(layer);
     const int filledRadii = pcskeleton::fillMissingRadii(skeleton);
     const std::vector<int> selected = selectedNodes(layer);
     if (selected.empty()) {
-        errorMessage = QString("No node of '%1' is selected. Select nodes first (e.g. Filters > Selection > "
+        failure_ = QString("No node of '%1' is selected. Select nodes first (e.g. Filters > Selection > "
                                "Conditional Vertex Selection), or use the Edit Skeleton tool.").arg(layer.label());
         return false;
     }
@@ -648,10 +671,10 @@ bool FilterPCSkeletonPlugin::editSelectedNodes(int filter, MeshDocument& md, con
     writeSkeletonLayer(layer, editor.skeleton());
     selectNodes(layer, selectedAfter);
     if (filledRadii > 0) {
-        Log(GLLogStream::WARNING, "%d node(s) of '%s' had no radius; they took their neighbours' radius.", filledRadii,
+        writeLog(*this, GLLogStream::WARNING, "%d node(s) of '%s' had no radius; they took their neighbours' radius.", filledRadii,
             qUtf8Printable(layer.label()));
     }
-    Log("Skeleton '%s': %s; now %s.", qUtf8Printable(layer.label()), editor.undoText().c_str(),
+    writeLog(*this, "Skeleton '%s': %s; now %s.", qUtf8Printable(layer.label()), editor.undoText().c_str(),
         pcskeleton::describe(pcskeleton::analyseTopology(editor.graph())).c_str());
     return true;
 }
@@ -660,15 +683,15 @@ MESHLAB_PLUGIN_NAME_EXPORTER(FilterPCSkeletonPlugin)
 
 bool FilterPCSkeletonPlugin::reconstructFromSkeleton(MeshDocument& md, const RichParameterList& parameters,
                                                      vcg::CallBackPos* cb) {
-    MeshModel* points = parameters.getMesh("pointsLayer");
-    MeshModel* skeleton = parameters.getMesh("skeletonLayer");
+    MeshModel* points = layerParameterValue(md, parameters, "pointsLayer");
+    MeshModel* skeleton = layerParameterValue(md, parameters, "skeletonLayer");
     if (!points || !skeleton) {
-        errorMessage = "Choose a point layer and a skeleton layer.";
+        failure_ = "Choose a point layer and a skeleton layer.";
         return false;
     }
     const ReconstructedLayer result =
         addReconstructionLayer(md, *points, *skeleton, readReconstructionParameters(parameters), progressOf(cb));
-    Log("Reconstruction '%s' from '%s' and '%s':", qUtf8Printable(result.layer->label()),
+    writeLog(*this, "Reconstruction '%s' from '%s' and '%s':", qUtf8Printable(result.layer->label()),
         qUtf8Printable(points->label()), qUtf8Printable(skeleton->label()));
     logLines(QString::fromStdString(pcskeleton::describeFindings(result.report)), GLLogStream::FILTER);
     for (const pcskeleton::ReconstructionWarning& w : result.report.warnings)
@@ -677,5 +700,5 @@ bool FilterPCSkeletonPlugin::reconstructFromSkeleton(MeshDocument& md, const Ric
 }
 
 void FilterPCSkeletonPlugin::logLines(const QString& text, GLLogStream::Levels level) {
-    for (const QString& line : text.split('\n')) Log(level, "  %s", qUtf8Printable(line));
+    for (const QString& line : text.split('\n')) writeLog(*this, level, "  %s", qUtf8Printable(line));
 }

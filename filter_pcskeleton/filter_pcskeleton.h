@@ -2,7 +2,7 @@
 // parameters, layers, progress and log here; every algorithm lives in vcg_ext/.
 #pragma once
 
-#include <common/interfaces.h>
+#include <meshlab_layers/meshlab_compat.h>
 
 #include <pcskeleton/curve_skeleton.h>
 
@@ -12,10 +12,15 @@ namespace pcskeleton::meshlab {
 struct LayerPoints;
 }
 
-class FilterPCSkeletonPlugin : public QObject, public MeshFilterInterface {
+class FilterPCSkeletonPlugin : public QObject, public pcskeleton::meshlab::FilterPluginBase {
     Q_OBJECT
+#if PCSKELETON_MESHLAB_2021_API
+    MESHLAB_PLUGIN_IID_EXPORTER(FILTER_PLUGIN_IID)
+    Q_INTERFACES(FilterPlugin)
+#else
     MESHLAB_PLUGIN_IID_EXPORTER(MESH_FILTER_INTERFACE_IID)
     Q_INTERFACES(MeshFilterInterface)
+#endif
 
 public:
     enum {
@@ -34,17 +39,41 @@ public:
     FilterPCSkeletonPlugin();
 
     QString pluginName() const override;
-    QString filterName(FilterIDType filter) const override;
-    QString filterInfo(FilterIDType filter) const override;
-    FilterClass getClass(QAction* action) override;
-    int getPreConditions(QAction* action) const override;
-    int postCondition(QAction* action) const override;
-    FILTER_ARITY filterArity(QAction* action) const override;
-    void initParameterSet(QAction* action, MeshDocument& md, RichParameterList& parameters) override;
+    QString filterName(int filter) const override;
+    QString filterInfo(int filter) const override;
+
+    // MeshLab's entry points, whose signatures changed in 2021.05: each forwards to the
+    // version-neutral member of the same purpose.
+#if PCSKELETON_MESHLAB_2021_API
+    FilterClass getClass(const QAction* action) const override { return filterClass(ID(action)); }
+    int getPreConditions(const QAction*) const override { return MeshModel::MM_VERTCOORD; }
+    int postCondition(const QAction* action) const override { return changesOf(ID(action)); }
+    FilterArity filterArity(const QAction* action) const override {
+        return takesTwoLayers(ID(action)) ? FIXED : SINGLE_MESH;
+    }
+    RichParameterList initParameterList(const QAction* action, const MeshDocument& md) override;
+    std::map<std::string, QVariant> applyFilter(const QAction* action, const RichParameterList& parameters,
+                                                MeshDocument& md, unsigned int& postConditionMask,
+                                                vcg::CallBackPos* cb) override;
+#else
+    FilterClass getClass(QAction* action) override { return filterClass(ID(action)); }
+    int getPreConditions(QAction*) const override { return MeshModel::MM_VERTCOORD; }
+    int postCondition(QAction* action) const override { return changesOf(ID(action)); }
+    FILTER_ARITY filterArity(QAction* action) const override { return takesTwoLayers(ID(action)) ? FIXED : SINGLE_MESH; }
+    void initParameterSet(QAction* action, MeshDocument& md, RichParameterList& parameters) override {
+        addParameters(ID(action), md, parameters);
+    }
     bool applyFilter(QAction* action, MeshDocument& md, const RichParameterList& parameters,
                      vcg::CallBackPos* cb) override;
+#endif
 
 private:
+    FilterClass filterClass(int filter) const;
+    int changesOf(int filter) const;  // MeshLab's post-condition mask
+    bool takesTwoLayers(int filter) const;
+    void addParameters(int filter, MeshDocument& md, RichParameterList& parameters);
+    // Runs the filter; on failure logs the reason, keeps it in failure_ and returns false.
+    bool apply(int filter, MeshDocument& md, const RichParameterList& parameters, vcg::CallBackPos* cb);
     bool runFilter(int filter, MeshDocument& md, const RichParameterList& parameters, vcg::CallBackPos* cb);
     // Iterates until the contraction stops or `limit` iterations, logging each one.
     int contract(pcskeleton::LaplacianContraction& contraction, int limit,
@@ -61,4 +90,6 @@ private:
     bool exportSkeleton(MeshDocument& md, const RichParameterList& parameters);
     bool editSelectedNodes(int filter, MeshDocument& md, const RichParameterList& parameters);
     bool reconstructFromSkeleton(MeshDocument& md, const RichParameterList& parameters, vcg::CallBackPos* cb);
+
+    QString failure_;  // why the last filter failed, for MeshLab's error message
 };

@@ -15,7 +15,7 @@ MeshModel* defaultSkeletonLayer(MeshDocument& md) {
     MeshModel* current = md.mm();
     if (current && isSkeleton(*current)) return current;
     MeshModel* any = nullptr;
-    for (MeshModel* m : md.meshList) {
+    for (MeshModel* m : layersOf(md)) {
         if (!isSkeleton(*m)) continue;
         if (current && sourceLayerOf(md, *m) == current) return m;
         if (!any) any = m;
@@ -28,7 +28,7 @@ MeshModel* defaultPointsLayer(MeshDocument& md) {
     if (current && !isSkeleton(*current)) return current;
     if (current)
         if (MeshModel* source = sourceLayerOf(md, *current)) return source;
-    for (MeshModel* m : md.meshList)
+    for (MeshModel* m : layersOf(md))
         if (!isSkeleton(*m) && m->cm.vn > 0) return m;
     return current;
 }
@@ -60,7 +60,7 @@ ReconstructedLayer addReconstructionLayer(MeshDocument& md, const MeshModel& poi
         ++face;
     }
     m.Tr = points.cm.Tr;  // same placement as the points
-    layer->UpdateBoxAndNormals();
+    updateBoxAndNormals(*layer);
     return {layer, result.report};
 }
 

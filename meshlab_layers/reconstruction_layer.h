@@ -3,7 +3,7 @@
 // button, so that both check the same things and make the same layer.
 #pragma once
 
-#include <common/meshmodel.h>
+#include "meshlab_compat.h"
 
 #include <pcskeleton/core/progress.h>
 #include <pcskeleton/reconstruction/skeleton_reconstruction.h>

@@ -131,7 +131,7 @@ MeshModel* addPointLayer(MeshDocument& md, const MeshModel& source, const LayerP
             layer->cm.vert[i].C() = source.cm.vert[input.vertexIndex[i]].cC();
         }
     }
-    layer->UpdateBoxAndNormals();
+    updateBoxAndNormals(*layer);
     return layer;
 }
 
@@ -163,7 +163,7 @@ void writeSkeletonLayer(MeshModel& layer, const SkeletonGraph& skeleton) {
     if (!skeleton.pointNode.empty()) {
         Allocator::GetPerMeshAttribute<std::vector<int>>(out, kCorrespondenceAttribute)() = skeleton.pointNode;
     }
-    layer.UpdateBoxAndNormals();
+    updateBoxAndNormals(layer);
 }
 
 MeshModel* addSegmentsLayer(MeshDocument& md, const MeshModel& source, const LayerPoints& input,
@@ -178,7 +178,7 @@ MeshModel* addSegmentsLayer(MeshDocument& md, const MeshModel& source, const Lay
         v.C() = skeleton.pointNode[i] < 0 ? vcg::Color4b(vcg::Color4b::Gray)
                                           : vcg::Color4b::Scatter(nodeCount, skeleton.pointNode[i], .6f, .9f);
     }
-    layer->UpdateBoxAndNormals();
+    updateBoxAndNormals(*layer);
     return layer;
 }
 

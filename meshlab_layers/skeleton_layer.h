@@ -7,7 +7,7 @@
 // point layer, the node it belongs to (-1: none), and pcs_source_layer that layer's id.
 #pragma once
 
-#include <common/meshmodel.h>
+#include "meshlab_compat.h"
 
 #include <pcskeleton/skeleton/skeleton_graph.h>
 

@@ -12,6 +12,7 @@
 #include <Eigen/Geometry>
 
 #include <cmath>
+#include <type_traits>
 
 namespace pcskeleton {
 
@@ -25,8 +26,14 @@ class IsoFace
 class IsoMesh : public vcg::tri::TriMesh<std::vector<IsoVertex>, std::vector<IsoFace>> {};
 
 using Volume = vcg::SimpleVolume<vcg::SimpleVoxel<float>>;
-// vcglib's walker allocates its slice caches with new[] and never frees them (50-66 KB
-// per surface under LeakSanitizer); they are protected members, freed here.
+// The vcglib of MeshLab 2020.09 allocates the walker's slice caches with new[] and never
+// frees them (50-66 KB per surface under LeakSanitizer); they are protected members, freed
+// here. Later vcglib (MeshLab 2022.02 on) keeps them in std::vectors: nothing to free.
+template <typename SliceCache>
+void freeSliceCache(SliceCache& cache) {
+    if constexpr (std::is_pointer_v<SliceCache>) delete[] cache;
+}
+
 class Walker : public vcg::tri::TrivialWalker<IsoMesh, Volume> {
 public:
     Walker() = default;
@@ -34,7 +41,7 @@ public:
     Walker& operator=(const Walker&) = delete;
     ~Walker() {
         if (_slice_dimension == 0) return;
-        for (auto* cache : {_x_cs, _y_cs, _z_cs, _x_ns, _z_ns}) delete[] cache;
+        for (auto* cache : {&_x_cs, &_y_cs, &_z_cs, &_x_ns, &_z_ns}) freeSliceCache(*cache);
     }
 };
 using Extractor = vcg::tri::MarchingCubes<IsoMesh, Walker>;
