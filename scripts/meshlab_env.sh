@@ -26,13 +26,13 @@ esac
 CHROOT="$ENV_DIR/$SUITE"
 STAMP="$CHROOT/.pcskeleton-ready"
 # Bump when the package list below changes, so cached environments are refreshed.
-ENV_REVISION=3
+ENV_REVISION=4
 
 PACKAGES=(
   build-essential cmake pkg-config ccache dpkg-dev
   qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev libglew-dev libglu1-mesa-dev
   libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev libsuitesparse-dev
-  meshlab xvfb xauth xdotool imagemagick python3 python3-numpy python3-matplotlib libcgal-demo
+  meshlab xvfb xauth xdotool imagemagick python3 python3-numpy python3-matplotlib python3-pil libcgal-demo
   # stock plugins' libraries that are only Recommends: without them MeshLab shows a
   # modal "Error while loading plugins" box
   lib3ds-1-3 libmuparser2v5 libopenctm1 libqhull-r8.0

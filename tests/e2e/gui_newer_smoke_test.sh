@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# GUI smoke test for MeshLab 2022.02 / 2025.07: the build tree's MeshLab under Xvfb,
+# driven by real mouse and keyboard events (xdotool). MeshLab starts with our plugins and
+# no plugin error dialog; Filters > Point Set > Compute Curve Skeleton runs from its dialog
+# and adds the skeleton layers; Edit > Edit Skeleton starts on the new skeleton and draws
+# its nodes (found on screen by their colour). Screenshots are kept in WORKDIR.
+# usage: gui_newer_smoke_test.sh PREFIX VERSION WORKDIR
+set -euo pipefail
+PREFIX="$1"; VERSION="$2"; WORK="$3"
+HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+
+if [ -z "${PCSKELETON_IN_XVFB:-}" ]; then
+  # A fixed screen size: the menu positions below depend on it.
+  PCSKELETON_IN_XVFB=1 exec xvfb-run -a -s "-screen 0 1280x1024x24" "$0" "$@"
+fi
+
+# Menu positions in a 1280x1000 MeshLab window at the top left, read off screenshots:
+# Filters, Filters > Point Set, and Compute Curve Skeleton in that submenu (the same in
+# 2022.02 and 2025.07).
+case "$VERSION" in
+  2022.*|2025.*) FILTERS=(116 9); POINT_SET=(150 355); SKELETON_ITEM=(656 401) ;;
+  *) echo "FAIL: no menu positions for MeshLab $VERSION"; exit 1 ;;
+esac
+EDIT_MENU=(72 9)
+
+rm -rf "$WORK"; mkdir -p "$WORK"; cd "$WORK"
+# A fresh MeshLab configuration every time: saved window layouts would move the widgets.
+export XDG_CONFIG_HOME="$WORK/config" XDG_DATA_HOME="$WORK/data-home"
+tar -xzf /usr/share/doc/libcgal-dev/data.tar.gz data/meshes/elephant.off
+source "$HERE/gui_lib.sh"
+
+"$PREFIX/bin/meshlab" "$WORK/data/meshes/elephant.off" >"$WORK/meshlab.log" 2>&1 &
+MESHLAB_PID=$!
+trap 'kill $MESHLAB_PID 2>/dev/null || true' EXIT
+wait_window "MeshLab $VERSION" 30
+sleep 2
+WINDOW="$(xdotool search --onlyvisible --name "MeshLab $VERSION" | head -1)"
+xdotool windowmove "$WINDOW" 0 0 windowsize "$WINDOW" 1280 1000
+sleep 1
+shot opened
+# Any other window now would be an error box (e.g. "Error while loading plugins").
+others="$(xdotool search --onlyvisible --name '.' getwindowname %@ 2>/dev/null | grep -v "^MeshLab $VERSION" || true)"
+[ -z "$others" ] || fail "MeshLab opened with another window: $others"
+
+click "${FILTERS[@]}"
+click "${POINT_SET[@]}"
+shot point-set-menu
+click "${SKELETON_ITEM[@]}" 1.5
+wait_window "Compute Curve Skeleton" 10
+shot skeleton-dialog
+# The dialog's buttons, from its geometry: Close and Apply share the bottom row.
+eval "$(xdotool search --onlyvisible --name "Compute Curve Skeleton" getwindowgeometry --shell | tr -d ' ')"
+click $((X + WIDTH * 3 / 4)) $((Y + HEIGHT - 21)) 6   # Apply
+shot skeleton-applied
+click $((X + WIDTH / 4)) $((Y + HEIGHT - 21))         # Close
+
+click "${EDIT_MENU[@]}"
+shot edit-menu
+xdotool key Up Return; sleep 2   # the last entry: Edit Skeleton (plugins are listed by file name)
+shot edit-skeleton
+read -r yellow red <<<"$(/usr/bin/python3 "$HERE/find_nodes.py" "$SHOT" count)"
+[ "$yellow" -ge 20 ] && [ "$red" -eq 0 ] \
+  || fail "the Edit Skeleton tool shows $yellow nodes ($red selected): expected the elephant's skeleton (20 or more)"
+echo "GUI smoke test, MeshLab $VERSION: OK ($yellow nodes on screen; screenshots in $WORK)"
