@@ -17,3 +17,19 @@ add_custom_target(meshlab_prefix ALL
 
 # Everyday use: sudo cmake --install build  (into Debian's MeshLab plugin directory).
 install(TARGETS filter_pcskeleton edit_skeleton LIBRARY DESTINATION "${MESHLAB_SYSTEM_DIR}/plugins")
+
+# Without root, MeshLab 2021+ only: cmake --install build-2022 --component user-plugins
+# puts the plugins in MeshLab's per-user plugin folder, read when the installing user runs
+# it: $XDG_DATA_HOME (or ~/.local/share)/VCG/MeshLab_64bit_fp/MeshLabExtraPlugins/<version>,
+# and meshlab-run in ~/.local/bin.
+if(PCSKELETON_MESHLAB_VERSION GREATER_EQUAL 202105)
+  install(CODE "
+    set(data_home \"\$ENV{XDG_DATA_HOME}\")
+    if(data_home STREQUAL \"\")
+      set(data_home \"\$ENV{HOME}/.local/share\")
+    endif()
+    file(INSTALL \"$<TARGET_FILE:filter_pcskeleton>\" \"$<TARGET_FILE:edit_skeleton>\"
+         DESTINATION \"\${data_home}/VCG/MeshLab_64bit_fp/MeshLabExtraPlugins/${MESHLAB_VERSION}\" USE_SOURCE_PERMISSIONS)
+    file(INSTALL \"$<TARGET_FILE:meshlab-run>\" DESTINATION \"\$ENV{HOME}/.local/bin\" USE_SOURCE_PERMISSIONS)
+  " COMPONENT user-plugins EXCLUDE_FROM_ALL)
+endif()

@@ -236,7 +236,13 @@ MeshModel* outputLayer(MeshDocument& md, const QString& which) {
 // MeshLab's plugin folder, its per-user one and the folders given with -p, as MeshLab
 // loads them at start-up.
 void loadPlugins(PluginManager& plugins, const QStringList& extraDirs) {
-    std::vector<QDir> dirs = {QDir(meshlab::defaultPluginPath()), QDir(MeshLabApplication::extraPluginsLocation())};
+    // Installed beside meshlab, MeshLab's own rule finds its plugins; installed elsewhere
+    // (~/.local/bin), the folder of the MeshLab it was built for.
+    QString systemDir = meshlab::defaultPluginPath();
+    if (systemDir.isEmpty() || QDir(systemDir).entryList({"*.so"}, QDir::Files).isEmpty()) {
+        systemDir = PCSKELETON_MESHLAB_PLUGIN_DIR;
+    }
+    std::vector<QDir> dirs = {QDir(systemDir), QDir(MeshLabApplication::extraPluginsLocation())};
     for (const QString& dir : extraDirs) dirs.emplace_back(dir);
     for (const QDir& dir : dirs) {
         try {
