@@ -7,7 +7,8 @@
 # /var/cache/pcskeleton) with MeshLab, Xvfb and our build dependencies, plus that
 # MeshLab's upstream source tarball unpacked in /src/meshlab (headers and vcglib: Debian
 # ships no MeshLab SDK). Idempotent: a second run checks a stamp and returns at once.
-# Prints the chroot's path on stdout. Needs root (debootstrap, chroot, mounts).
+# Prints the chroot's path on stdout. Needs root (debootstrap, chroot, mounts); nothing
+# stays mounted in it afterwards (scripts/chroot_mounts.sh).
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -47,17 +48,12 @@ mirror() {
   echo "${uri:-http://deb.debian.org/debian}"
 }
 
-mount_pseudo_filesystems() {
-  mountpoint -q "$CHROOT/proc" || mount -t proc proc "$CHROOT/proc"
-  mountpoint -q "$CHROOT/sys" || mount -t sysfs sysfs "$CHROOT/sys"
-  mountpoint -q "$CHROOT/dev" || mount --rbind /dev "$CHROOT/dev"
-}
+source "$ROOT/scripts/chroot_mounts.sh"
 
 in_chroot() { chroot "$CHROOT" /usr/bin/env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin HOME=/root \
   DEBIAN_FRONTEND=noninteractive LANG=C.UTF-8 "$@"; }
 
 if [ -f "$STAMP" ] && [ "$(cat "$STAMP")" = "$ENV_REVISION" ]; then
-  mount_pseudo_filesystems
   echo "$CHROOT"
   exit 0
 fi
@@ -71,7 +67,8 @@ if [ ! -x "$CHROOT/usr/bin/apt-get" ]; then
   debootstrap --variant=minbase "$SUITE" "$CHROOT.partial" "$MIRROR" >&2
   mv "$CHROOT.partial" "$CHROOT"
 fi
-mount_pseudo_filesystems
+chroot_mount "$CHROOT"
+trap 'chroot_unmount "$CHROOT"' EXIT
 cp /etc/resolv.conf "$CHROOT/etc/resolv.conf" 2>/dev/null || true
 # deb and deb-src from the same mirror; sid's index may be older than the machine's clock.
 cat >"$CHROOT/etc/apt/sources.list.d/debian.sources" <<SRC

@@ -3,12 +3,24 @@
 # (unit tests, the plugin loaded from its .so, meshlabserver and the GUI under Xvfb), then
 # builds the library, the CLI and the unit tests with AddressSanitizer and
 # UndefinedBehaviorSanitizer (leaks included) in build-sanitize/ and runs them again there:
-# any sanitizer report fails the test that triggered it. CTest arguments ("-R io", ...)
-# apply to both runs; PCSKELETON_SANITIZE=0 skips the second.
+# any sanitizer report fails the test that triggered it. Between the two, the plugins are
+# built and tested against MeshLab 2022.02 and 2025.07 (meshlab-run, the GUI under Xvfb, the
+# per-user install) in Debian trixie and sid environments that scripts/meshlab_env.sh makes
+# once from Debian's archive (a few minutes, 2 GB each, cached in /var/cache/pcskeleton).
+# CTest arguments ("-R io", ...) apply to every run; PCSKELETON_NEWER_MESHLAB=0 skips the
+# newer MeshLab versions, PCSKELETON_SANITIZE=0 the sanitizer run.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bash "$ROOT/scripts/build.sh"
 (cd "$ROOT/build" && ctest --output-on-failure -j1 "$@")
+
+if [ "${PCSKELETON_NEWER_MESHLAB:-1}" != 0 ]; then
+  if [ "$(id -u)" -eq 0 ]; then SUDO=(); else SUDO=(sudo); fi  # chroot and mounts
+  for version in 2022 2025; do
+    echo "== The plugins in MeshLab $version (build-$version/)"
+    "${SUDO[@]}" bash "$ROOT/scripts/test_newer_meshlab.sh" "$version" "$@"
+  done
+fi
 
 if [ "${PCSKELETON_SANITIZE:-1}" != 0 ]; then
   echo "== The same tests under AddressSanitizer + UndefinedBehaviorSanitizer (build-sanitize/)"

@@ -13,9 +13,9 @@ VERSION="${1:?usage: $0 2022|2025 [ctest arguments]}"; shift
 
 CHROOT="$(bash "$ROOT/scripts/meshlab_env.sh" "$VERSION")"
 PARENT="$(dirname "$ROOT")"
-mkdir -p "$CHROOT$PARENT"
-mountpoint -q "$CHROOT$PARENT" || mount --bind "$PARENT" "$CHROOT$PARENT"
-trap 'umount "$CHROOT$PARENT" 2>/dev/null || umount -l "$CHROOT$PARENT" 2>/dev/null || true' EXIT
+source "$ROOT/scripts/chroot_mounts.sh"
+chroot_mount "$CHROOT" "$PARENT"
+trap 'chroot_unmount "$CHROOT" "$PARENT"' EXIT
 
 BUILD="$ROOT/build-$VERSION"
 start=$SECONDS

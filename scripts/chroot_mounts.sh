@@ -1,0 +1,27 @@
+# Sourced by meshlab_env.sh and test_newer_meshlab.sh: the kernel file systems a Debian
+# environment (chroot) needs while something runs in it, mounted for that time only. A
+# cached environment is never left with /dev bound into it, where deleting the cache
+# would reach the machine's own device files.
+
+# chroot_mount CHROOT [HOST_DIR...]: /proc, /sys, /dev, and each HOST_DIR at its own path.
+chroot_mount() {
+  local root="$1"; shift
+  mountpoint -q "$root/proc" || mount -t proc proc "$root/proc"
+  mountpoint -q "$root/sys" || mount -t sysfs sysfs "$root/sys"
+  mountpoint -q "$root/dev" || { mount --rbind /dev "$root/dev" && mount --make-rslave "$root/dev"; }
+  local dir
+  for dir in "$@"; do
+    mkdir -p "$root$dir"
+    mountpoint -q "$root$dir" || mount --bind "$dir" "$root$dir"
+  done
+}
+
+# chroot_unmount CHROOT [HOST_DIR...]: the reverse; quiet about what was not mounted.
+chroot_unmount() {
+  local root="$1"; shift
+  local dir
+  for dir in "$@" /dev /sys /proc; do
+    mountpoint -q "$root$dir" && { umount -R "$root$dir" 2>/dev/null || umount -l "$root$dir"; }
+  done
+  return 0
+}
