@@ -7,8 +7,10 @@
 # built and tested against MeshLab 2022.02 and 2025.07 (meshlab-run, the GUI under Xvfb, the
 # per-user install) in Debian trixie and sid environments that scripts/meshlab_env.sh makes
 # once from Debian's archive (a few minutes, 2 GB each, cached in /var/cache/pcskeleton).
-# CTest arguments ("-R io", ...) apply to every run; PCSKELETON_NEWER_MESHLAB=0 skips the
-# newer MeshLab versions, PCSKELETON_SANITIZE=0 the sanitizer run.
+# On Debian 12 it also runs the README's two commands on Debian 13 in a clean clone of the
+# last commit (scripts/test_debian13_native.sh). CTest arguments ("-R io", ...) apply to
+# every run; PCSKELETON_NEWER_MESHLAB=0 skips the newer MeshLab versions and Debian 13,
+# PCSKELETON_SANITIZE=0 the sanitizer run.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bash "$ROOT/scripts/build.sh"
@@ -16,10 +18,16 @@ bash "$ROOT/scripts/build.sh"
 
 if [ "${PCSKELETON_NEWER_MESHLAB:-1}" != 0 ]; then
   if [ "$(id -u)" -eq 0 ]; then SUDO=(); else SUDO=(sudo); fi  # chroot and mounts
+  main_version="$(cut -c1-4 "$ROOT/deps/meshlab-src/ML_VERSION")"  # the build above: 2020 or 2022
   for version in 2022 2025; do
+    [ "$version" != "$main_version" ] || continue
     echo "== The plugins in MeshLab $version (build-$version/)"
     "${SUDO[@]}" bash "$ROOT/scripts/test_newer_meshlab.sh" "$version" "$@"
   done
+  if [ "$main_version" = 2020 ]; then
+    echo "== The README's two commands on Debian 13 (MeshLab 2022.02), in a clean clone"
+    "${SUDO[@]}" bash "$ROOT/scripts/test_debian13_native.sh" "$@"
+  fi
 fi
 
 if [ "${PCSKELETON_SANITIZE:-1}" != 0 ]; then
