@@ -57,6 +57,7 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <set>
 #include <memory>
 #include <string>
 #include <vector>
@@ -447,9 +448,30 @@ int outlierDetection(const std::vector<Subject>& subjects, std::size_t n, const 
     return 0;
 }
 
+const char* const kUsage =
+    "usage: bench_robustness [POINTS] [--paper] [--no-refine] [--no-recentre] [--extend-tips] [--no-link-limit]\n"
+    "                        [--full-resolution] [--contracted-points N] [--shape TEXT]\n"
+    "       bench_robustness --outliers [POINTS [ISOLATION [CLUSTER [LOCAL]]]]\n"
+    "       bench_robustness --write SHAPE CONDITION FILE [POINTS]\n"
+    "The table of every shape under every scan defect (the default), the outlier detector's scores, or one\n"
+    "case written as a PLY file. POINTS: points per clean sample (6000).\n";
+
 int main(int argc, char** argv) {
-    // bench_robustness [POINTS] [--paper] [--no-refine] [--no-link-limit] | --outliers [ISOLATION CLUSTER LOCAL] | --write SHAPE CONDITION FILE
     std::vector<std::string> args(argv + 1, argv + argc);
+    const std::set<std::string> flags{"--paper",         "--no-refine",         "--no-recentre",
+                                      "--extend-tips",   "--no-link-limit",     "--full-resolution",
+                                      "--outliers",      "--write",             "--contracted-points",
+                                      "--shape"};
+    for (const std::string& arg : args) {
+        if (arg == "--help" || arg == "-h") {
+            std::printf("%s", kUsage);
+            return 0;
+        }
+        if (arg.rfind("--", 0) == 0 && !flags.count(arg)) {
+            std::fprintf(stderr, "bench_robustness: unknown option %s\n%s", arg.c_str(), kUsage);
+            return 2;
+        }
+    }
     const bool write = !args.empty() && args[0] == "--write" && args.size() >= 4;
     const bool outliers = std::find(args.begin(), args.end(), "--outliers") != args.end();
     const bool paper = std::find(args.begin(), args.end(), "--paper") != args.end();
