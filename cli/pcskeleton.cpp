@@ -7,6 +7,7 @@
 #include <pcskeleton/io/point_cloud_io.h>
 #include <pcskeleton/io/skeleton_io.h>
 
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -14,6 +15,7 @@
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <string>
 #include <unistd.h>
@@ -223,8 +225,14 @@ double parseNumber(const std::string& option, const std::string& text) {
 
 int parseInteger(const std::string& option, const std::string& text) {
     char* end = nullptr;
+    errno = 0;
     const long value = std::strtol(text.c_str(), &end, 10);
     if (text.empty() || *end != '\0') throw UsageError(option + " expects an integer, got '" + text + "'");
+    // A value that does not fit would otherwise wrap around (2^31 became a negative count).
+    if (errno == ERANGE || value < std::numeric_limits<int>::min() || value > std::numeric_limits<int>::max()) {
+        throw UsageError(option + " " + text + " is out of range (at most " +
+                         std::to_string(std::numeric_limits<int>::max()) + ")");
+    }
     return static_cast<int>(value);
 }
 

@@ -139,6 +139,7 @@ expect_error 1 "unknown extension" $M/knot.off.gz -o out.ply
 expect_error 2 "no output" $M/knot.off
 expect_error 2 "must end in .ply, .obj or .cg" $M/knot.off -o out.swc
 expect_error 2 "expects a number" $M/knot.off -o out.ply --radius big
+expect_error 2 "contracted-points 2147483648 is out of range" $M/knot.off -o out.ply --contracted-points 2147483648
 expect_error 2 "unknown option" $M/knot.off -o out.ply --fast
 expect_error 1 "^pcskeleton: --radius must be a fraction" $M/knot.off -o out.ply --radius 2
 expect_error 1 "^pcskeleton: --sl must be at least 1" $M/knot.off -o out.ply --sl 0.5
