@@ -5,9 +5,9 @@
 # one, merges two, moves two and undoes the last move, enlarges a radius, shows the
 # radius field, saves the layer with Export
 # Skeleton and checks the saved graph node by node. Screenshots are kept in WORKDIR.
-# usage: gui_edit_test.sh PREFIX WORKDIR
+# usage: gui_edit_test.sh PREFIX WORKDIR [MESHLAB_VERSION]   (2020.09 by default; 2022.02, 2025.07)
 set -euo pipefail
-PREFIX="$1"; WORK="$2"
+PREFIX="$1"; WORK="$2"; VERSION="${3:-2020.09}"
 HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 
 if [ -z "${PCSKELETON_IN_XVFB:-}" ]; then
@@ -27,6 +27,15 @@ expect_nodes() {  # yellow, red
   [ "$counts" = "$1 $2" ] || fail "expected $1 unselected and $2 selected nodes on screen, saw $counts"
 }
 
+# Where things are in a 1280x900 MeshLab window at the top left, read off screenshots of
+# each version: Filters, Filters > Point Set, Export Skeleton in it, and the tool panel's
+# "Reconstruct from skeleton" button.
+case "$VERSION" in
+  2020.*) FILTERS=(120 10); POINT_SET=(160 386); EXPORT_ITEM=(640 536); RECONSTRUCT_BUTTON=(1074 326) ;;
+  2022.*|2025.*) FILTERS=(116 9); POINT_SET=(150 355); EXPORT_ITEM=(634 493); RECONSTRUCT_BUTTON=(1082 293) ;;
+  *) echo "FAIL: no screen positions for MeshLab $VERSION"; exit 1 ;;
+esac
+
 $PY "$HERE/make_ring.py" 0.25 --torus  # a torus cloud and its centre circle, 12 nodes
 
 "$PREFIX/bin/meshlab" "$WORK/torus.ply" "$WORK/ring.ply" >"$WORK/meshlab.log" 2>&1 &
@@ -40,7 +49,9 @@ sleep 1
 
 click 74 10            # Edit
 shot edit-menu
-click 128 434 2        # Edit Skeleton (the ring is the current layer)
+# Edit Skeleton (the ring is the current layer): the menu's last entry, as edit plugins are
+# listed by file name; 2020.09 has it higher up.
+if [[ "$VERSION" == 2020.* ]]; then click 128 434 2; else xdotool key Up Return; sleep 2; fi
 shot tool-started
 expect_nodes 12 0
 
@@ -78,7 +89,7 @@ shot radius-field
 BEFORE="$SHOT"
 
 # Reconstruct from skeleton (the panel's button): a surface layer appears in the view.
-click 1074 326 10
+click "${RECONSTRUCT_BUTTON[@]}" 10
 shot reconstructed
 $PY - "$BEFORE" "$SHOT" <<'PY' || fail "no reconstructed surface appeared in the view"
 import sys
@@ -91,11 +102,17 @@ assert share > 0.05
 PY
 
 # Save the layer: Filters > Point Set > Export Skeleton, with its default file name.
-click 120 10; click 160 386; click 640 536 1.5
+click "${FILTERS[@]}"; click "${POINT_SET[@]}"; click "${EXPORT_ITEM[@]}" 1.5
 wait_window "Export Skeleton" 10
 shot export-dialog
-click 216 293 2        # Apply
-click 76 293           # Close
+if [[ "$VERSION" == 2020.* ]]; then
+  click 216 293 2      # Apply
+  click 76 293         # Close
+else  # the dialog's bottom row: Close at a quarter of its width, Apply at three quarters
+  eval "$(xdotool search --onlyvisible --name "Export Skeleton" getwindowgeometry --shell | tr -d ' ')"
+  click $((X + WIDTH * 3 / 4)) $((Y + HEIGHT - 21)) 2
+  click $((X + WIDTH / 4)) $((Y + HEIGHT - 21))
+fi
 SAVED="$WORK/ring_1.ply"  # the default never replaces the file the skeleton came from
 [ -s "$SAVED" ] || fail "the edited skeleton was not saved to $SAVED"
 cmp -s "$SAVED" ring.ply && fail "the saved skeleton is the original"
