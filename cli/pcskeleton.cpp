@@ -67,6 +67,7 @@ std::string optionOf(Parameter parameter) {
         case Parameter::SkeletonWeight: return "--skeleton-weight";
         case Parameter::OutsideWeight: return "--outside-weight";
         case Parameter::OutsideDistance: return "--outside-radii";
+        case Parameter::SkeletonTopology: return "the topology guarantee (--data-topology turns it off)";
         default: return libraryTerms().parameter(parameter);
     }
 }
@@ -125,6 +126,9 @@ void printHelp() {
         "  --skeleton-weight X   w3, the field is -radius on the skeleton [%g]\n"
         "  --outside-weight X    w4, the field is positive far from the skeleton [%g]\n"
         "  --outside-radii K     \"far\" is more than K node radii from the skeleton [%g]\n"
+        "  --data-topology       the paper's plain fit: the surface may have handles and\n"
+        "                        parts the skeleton has not (by default they are cut away\n"
+        "                        and the surface has exactly the skeleton's topology)\n"
         "\n"
         "After the run a quality report goes to stderr: cycles, tips, junctions, parts,\n"
         "whether contraction converged, and warnings (points that did not contract, parts\n"
@@ -197,7 +201,7 @@ void printHelp() {
         "                        need more [80%% of the machine's memory]\n"
         "  --paper               the paper's pipeline exactly: the same as --keep-outliers\n"
         "                        --denoise 0 --no-recentre --no-refine --no-extend-tips\n"
-        "                        --link-limit 0 --full-resolution\n"
+        "                        --link-limit 0 --full-resolution (and --data-topology)\n"
         "  --report FILE         also write the quality report to FILE\n"
         "  --force               replace output files that exist already (never the input)\n"
         "  --quiet               no progress and no summary on stderr\n"
@@ -335,8 +339,11 @@ bool parseArguments(int argc, char** argv, Options& options) {
             options.parameters.resolution.maxContractedPoints = 0;
         } else if (arg == "--keep-outliers") {
             c.outliers.detect = false;
+        } else if (arg == "--data-topology") {
+            options.reconstruction.keepSkeletonTopology = false;
         } else if (arg == "--paper") {
             options.parameters.keepToThePaper();
+            options.reconstruction.keepSkeletonTopology = false;
         } else if (auto option = withValue.find(arg); option != withValue.end()) {
             if (i + 1 >= argc) throw UsageError(arg + " needs a value");
             option->second(argv[++i]);

@@ -180,6 +180,11 @@ void addReconstructionParameters(RichParameterList& list) {
     list.addParam(RichFloat("outsideRadii", float(d.outsideRadii), parameterLabel(Parameter::OutsideDistance),
         "Space farther than K node radii from the skeleton counts as outside the shape (the paper's 4). "
         "Lower it to keep gaps open next to thin parts."));
+    list.addParam(RichBool("keepSkeletonTopology", d.keepSkeletonTopology, parameterLabel(Parameter::SkeletonTopology),
+        "The surface gets exactly the skeleton's topology: one closed part per skeleton part and one handle per "
+        "loop. Handles, bridges and islands that the points suggest but the skeleton does not have (noise, "
+        "close parts touching) are cut away, and the log says where the largest cut was. Untick for the paper's "
+        "plain fit, whose surface may have any topology the points suggest."));
 }
 
 pcskeleton::ReconstructionParameters readReconstructionParameters(const RichParameterList& list) {
@@ -190,6 +195,7 @@ pcskeleton::ReconstructionParameters readReconstructionParameters(const RichPara
     p.skeletonWeight = list.getFloat("skeletonWeight");
     p.outsideWeight = list.getFloat("outsideWeight");
     p.outsideRadii = list.getFloat("outsideRadii");
+    p.keepSkeletonTopology = list.getBool("keepSkeletonTopology");
     return p;
 }
 

@@ -1,11 +1,13 @@
 // Skeleton-driven reconstruction (Section V) on shapes whose topology is known: the
 // skeleton, not the gaps in the data, decides the genus.
 #include "support/sampled_shapes.h"
+#include "support/scan_simulation.h"
 #include <pcskeleton/reconstruction/skeleton_reconstruction.h>
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -133,6 +135,35 @@ TEST(Reconstruction, SameScanWithTheLoopCutGivesGenusZero) {
     const Reconstruction result = reconstructFromSkeleton(torusScanWithGap(), ringCutAcrossTheGap(), atResolution(96));
     expectClosedSurfaceOfGenus(result, 0);
     EXPECT_LT(deviationWhereDataExists(result.mesh, 1.0, 10 * kPi / 180), 0.002);
+}
+
+// The topology guarantee: noise does not add handles, and a loop the user cut stays cut
+// even where the data is complete; the log says where the data disagreed.
+TEST(Reconstruction, NoisyTorusWithItsRingHasGenusOneWhateverTheNoise) {
+    for (double noise : {0.01, 0.02}) {
+        SCOPED_TRACE(noise);
+        const PointList scan = shapes::withNoise(shapes::torus(12000, 1.0, 0.3, 5), noise);
+        const Reconstruction result = reconstructFromSkeleton(scan, ringSkeleton(), atResolution(64));
+        expectClosedSurfaceOfGenus(result, 1);
+        EXPECT_TRUE(result.report.topologyControlled);
+    }
+}
+
+TEST(Reconstruction, ACutRingCutsTheCompleteTorusUnlessTheDataIsToDecide) {
+    const PointList scan = shapes::torus(12000, 1.0, 0.3, 5);
+    const Reconstruction kept = reconstructFromSkeleton(scan, ringCutAcrossTheGap(), atResolution(64));
+    expectClosedSurfaceOfGenus(kept, 0);
+    const auto& warnings = kept.report.warnings;
+    EXPECT_TRUE(std::any_of(warnings.begin(), warnings.end(), [](const ReconstructionWarning& w) {
+        return w.kind == ReconstructionWarning::Kind::DataDisagreesWithSkeleton;
+    })) << describe(kept.report);
+    EXPECT_GT(kept.report.removedNodes, 0u);
+
+    ReconstructionParameters plainFit = atResolution(64);
+    plainFit.keepSkeletonTopology = false;
+    const Reconstruction fitted = reconstructFromSkeleton(scan, ringCutAcrossTheGap(), plainFit);
+    expectClosedSurfaceOfGenus(fitted, 1);
+    EXPECT_FALSE(fitted.report.topologyControlled);
 }
 
 TEST(Reconstruction, DoubleTorusGivesGenusTwo) {

@@ -37,6 +37,7 @@ std::string libraryParameterName(Parameter p) {
         case Parameter::DenoisingPasses: return "the denoising passes";
         case Parameter::LinkLimit: return "the stretched-link limit";
         case Parameter::ContractedPoints: return "the number of contracted points";
+        case Parameter::SkeletonTopology: return "the skeleton's topology guarantee";
     }
     return "a parameter";
 }

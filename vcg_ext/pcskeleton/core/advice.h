@@ -38,6 +38,7 @@ enum class Parameter {
     DenoisingPasses,
     LinkLimit,
     ContractedPoints,
+    SkeletonTopology,  // the reconstruction keeps the skeleton's topology
 };
 
 // Steps the user takes outside the computation that found the problem.

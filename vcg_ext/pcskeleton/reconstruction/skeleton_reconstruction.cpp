@@ -3,6 +3,7 @@
 #include "pcskeleton/internal/machine_memory.h"
 #include "pcskeleton/internal/stopwatch.h"
 #include "pcskeleton/reconstruction/field_fitting.h"
+#include "pcskeleton/reconstruction/topology_control.h"
 #include "pcskeleton/skeleton/skeleton_distance.h"
 
 #include <Eigen/Geometry>
@@ -307,6 +308,28 @@ Reconstruction reconstructFromSkeleton(const PointList& points, const SkeletonGr
                                     {"the surface reached the edge of the grid at " + std::to_string(opened) +
                                          " nodes and was closed there",
                                      {Remedy::raise(Parameter::OutsideWeight)}}});
+    if (parameters.keepSkeletonTopology) {
+        const TopologyControl control = constrainToSkeletonTopology(grid, frameSkeleton, field);
+        summary.topologyControlled = true;
+        summary.insideNodes = control.insideNodes;
+        summary.removedNodes = control.removedNodes;
+        // A group of cut nodes worth a look: at least a quarter of a typical bone's cross-
+        // section (a handle cut across a real tube), not a noise tunnel of a few nodes.
+        std::vector<double> radii = frameSkeleton.radii;
+        std::nth_element(radii.begin(), radii.begin() + radii.size() / 2, radii.end());
+        const double typicalRadius = radii[radii.size() / 2] / grid.spacing;  // in cells
+        const double worthALook = 0.25 * 3.14159265358979323846 * typicalRadius * typicalRadius;
+        if (control.largestRemoval > 0 && double(control.largestRemoval) >= worthALook) {
+            const Point where = frame.toInput(control.largestRemovalCentre);
+            std::ostringstream text;
+            text.precision(3);
+            text << "the points suggest a handle, bridge or part the skeleton does not have near (" << where.x()
+                 << ", " << where.y() << ", " << where.z() << "); it was cut away (" << control.largestRemoval
+                 << " grid nodes). If the shape has a loop or a part there, add it to the skeleton";
+            summary.warnings.push_back({ReconstructionWarning::Kind::DataDisagreesWithSkeleton,
+                                        {text.str(), {Remedy::turnOff(Parameter::SkeletonTopology)}}});
+        }
+    }
     result.mesh = extractZeroLevelSet(grid, field);
     if (result.mesh.triangles.empty())
         throw InvalidInput("The field has no zero crossing: no surface was found. The skeleton radii must be close to "
@@ -314,6 +337,15 @@ Reconstruction reconstructFromSkeleton(const PointList& points, const SkeletonGr
                            {Remedy::take(Step::SetNodeRadii), Remedy::raise(Parameter::SurfaceWeight)});
     for (Point& v : result.mesh.vertices) v = frame.toInput(v);
     summary.topology = analyseSurface(result.mesh);
+    const SkeletonTopology wanted = analyseTopology(skeleton.nodeCount(), skeleton.edges);
+    if (parameters.keepSkeletonTopology &&
+        (summary.topology.components != wanted.components || summary.topology.genus != wanted.cycles))
+        summary.warnings.push_back({ReconstructionWarning::Kind::TopologyDiffersFromSkeleton,
+                                    {"the surface has " + describe(summary.topology) + ", the skeleton " +
+                                         std::to_string(wanted.components) + " component(s) and " +
+                                         std::to_string(wanted.cycles) + " cycle(s): the grid is too coarse for "
+                                         "the skeleton's detail",
+                                     {Remedy::raise(Parameter::Resolution)}}});
     if (!summary.topology.closedManifold())
         summary.warnings.push_back({ReconstructionWarning::Kind::NotClosedManifold,
                                     {"the surface is not a closed 2-manifold: " + describe(summary.topology), {}}});
@@ -334,6 +366,9 @@ std::string describeFindings(const ReconstructionReport& r) {
          << "time: setup " << r.setupSeconds << " s, solve " << r.solveSeconds << " s, surface "
          << r.extractionSeconds << " s\n"
          << "result: " << describe(r.topology);
+    if (r.topologyControlled)
+        text << "\ntopology: the skeleton's, " << r.removedNodes << " of the fit's " << r.insideNodes
+             << " inside grid nodes cut away";
     return text.str();
 }
 

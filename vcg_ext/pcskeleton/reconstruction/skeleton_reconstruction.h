@@ -33,6 +33,10 @@ struct ReconstructionParameters {
     double outsideWeight = 0.005;  // w4: the field is positive far from the skeleton
     double outsideRadii = 4.0;     // K: "far" = more than K radii from the skeleton
     int resolution = 128;          // grid cells along the longest side of the domain
+    // The surface gets the skeleton's topology (topology_control.h): handles, bridges and
+    // islands the skeleton does not have are cut away. false: the paper's plain fit, whose
+    // zero level set may have any topology the data suggests.
+    bool keepSkeletonTopology = true;
 };
 
 constexpr int kMinimumResolution = 16;
@@ -42,7 +46,14 @@ constexpr int kMaximumResolution = 512;
 void checkReconstructionParameters(const ReconstructionParameters& parameters);
 
 struct ReconstructionWarning {
-    enum class Kind { PointsFarFromSkeleton, SolverNotConverged, SurfaceReachedGridEdge, NotClosedManifold };
+    enum class Kind {
+        PointsFarFromSkeleton,
+        SolverNotConverged,
+        SurfaceReachedGridEdge,
+        NotClosedManifold,
+        DataDisagreesWithSkeleton,  // the fit had a handle, bridge or island the skeleton has not
+        TopologyDiffersFromSkeleton,
+    };
     Kind kind;
     Problem problem;
 };
@@ -57,6 +68,8 @@ struct ReconstructionReport {
     bool converged = false;
     double setupSeconds = 0, solveSeconds = 0, extractionSeconds = 0;
     SurfaceTopology topology;
+    bool topologyControlled = false;
+    std::size_t insideNodes = 0, removedNodes = 0;  // the fit's inside, and what was cut from it
     std::vector<ReconstructionWarning> warnings;  // things the user should look at
 };
 // Several lines for a log: grid, unknowns, solver, time, topology of the result.

@@ -1,0 +1,275 @@
+#include "pcskeleton/reconstruction/topology_control.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <queue>
+#include <utility>
+
+namespace pcskeleton {
+
+namespace {
+
+// How far outside a removed inside node is put, and the margins that make marching cubes
+// separate diagonal contacts, in cells. Values well above the thousandth of a cell that
+// extraction pushes off zero; small enough that the surface stays within the cell.
+constexpr double kJustOutside = 0.1;
+constexpr double kNudgedInside = 0.05;
+
+// A node's 3x3x3 neighbourhood: position p = (dx+1) + 3(dy+1) + 9(dz+1), 13 the node itself.
+constexpr int kCentre = 13;
+
+struct Neighbourhood {
+    std::array<std::array<int, 3>, 27> offset{};
+    std::array<bool, 27> in18{};                          // |dx|+|dy|+|dz| <= 2, centre excluded
+    std::array<bool, 27> faceNeighbour{};                 // 6-adjacent to the centre
+    std::array<std::vector<int>, 27> faceAdjacent;        // 6-adjacent positions in the 18-neighbourhood
+    std::array<std::vector<int>, 27> adjacent;            // 26-adjacent positions, centre excluded
+};
+
+const Neighbourhood& neighbourhood() {
+    static const Neighbourhood n = [] {
+        Neighbourhood h;
+        for (int p = 0; p < 27; ++p) h.offset[p] = {p % 3 - 1, p / 3 % 3 - 1, p / 9 - 1};
+        const auto l1 = [&](int p) { return std::abs(h.offset[p][0]) + std::abs(h.offset[p][1]) + std::abs(h.offset[p][2]); };
+        for (int p = 0; p < 27; ++p) {
+            h.in18[p] = p != kCentre && l1(p) <= 2;
+            h.faceNeighbour[p] = l1(p) == 1;
+        }
+        for (int p = 0; p < 27; ++p) {
+            for (int q = 0; q < 27; ++q) {
+                if (q == p || q == kCentre || p == kCentre) continue;
+                int chebyshev = 0, manhattan = 0;
+                for (int a = 0; a < 3; ++a) {
+                    const int d = std::abs(h.offset[p][a] - h.offset[q][a]);
+                    chebyshev = std::max(chebyshev, d);
+                    manhattan += d;
+                }
+                if (chebyshev == 1) h.adjacent[p].push_back(q);
+                if (manhattan == 1 && h.in18[p] && h.in18[q]) h.faceAdjacent[p].push_back(q);
+            }
+        }
+        return h;
+    }();
+    return n;
+}
+
+// Components of the positions in `members` (a 27-bit mask) under `links`; with `mustTouch`,
+// only those containing one of its positions are counted.
+int countComponents(std::uint32_t members, const std::array<std::vector<int>, 27>& links, std::uint32_t mustTouch) {
+    int count = 0;
+    std::array<int, 27> stack{};
+    while (members) {
+        const int start = __builtin_ctz(members);
+        members &= ~(1u << start);
+        bool touches = (mustTouch >> start) & 1u;
+        int top = 0;
+        stack[top++] = start;
+        while (top) {
+            const int p = stack[--top];
+            for (int q : links[p]) {
+                if ((members >> q) & 1u) {
+                    members &= ~(1u << q);
+                    touches = touches || ((mustTouch >> q) & 1u);
+                    stack[top++] = q;
+                }
+            }
+        }
+        count += touches;
+    }
+    return count;
+}
+
+// A simple point of a (6, 26) region: one 6-component of the inside around it that it
+// touches by a face, one 26-component of the outside around it.
+bool isSimple(std::uint32_t inside) {
+    const Neighbourhood& h = neighbourhood();
+    std::uint32_t inside18 = 0, outside26 = 0, faceNeighbours = 0;
+    for (int p = 0; p < 27; ++p) {
+        if (p == kCentre) continue;
+        const bool in = (inside >> p) & 1u;
+        if (in && h.in18[p]) inside18 |= 1u << p;
+        if (!in) outside26 |= 1u << p;
+        if (h.faceNeighbour[p]) faceNeighbours |= 1u << p;
+    }
+    return countComponents(inside18, h.faceAdjacent, faceNeighbours) == 1 &&
+           countComponents(outside26, h.adjacent, ~0u) == 1;
+}
+
+class Region {
+public:
+    explicit Region(const FieldGrid& grid) : grid_(grid), member_(grid.size(), 0) {
+        const Neighbourhood& h = neighbourhood();
+        for (int p = 0; p < 27; ++p)
+            stride_[p] = h.offset[p][0] + std::ptrdiff_t(grid.nodes[0]) * (h.offset[p][1] + std::ptrdiff_t(grid.nodes[1]) * h.offset[p][2]);
+    }
+    bool contains(std::size_t n) const { return member_[n] != 0; }
+    void add(std::size_t n) { member_[n] = 1; }
+    std::size_t neighbour(std::size_t n, int p) const { return std::size_t(std::ptrdiff_t(n) + stride_[p]); }
+    std::uint32_t insideMask(std::size_t n) const {
+        std::uint32_t mask = 0;
+        for (int p = 0; p < 27; ++p)
+            if (p != kCentre && member_[neighbour(n, p)]) mask |= 1u << p;
+        return mask;
+    }
+    bool interior(std::size_t n) const {
+        const int i = int(n % grid_.nodes[0]), j = int(n / grid_.nodes[0] % grid_.nodes[1]),
+                  k = int(n / (std::size_t(grid_.nodes[0]) * grid_.nodes[1]));
+        return !grid_.isBoundary(i, j, k);
+    }
+
+private:
+    const FieldGrid& grid_;
+    std::vector<std::uint8_t> member_;
+    std::array<std::ptrdiff_t, 27> stride_{};
+};
+
+// The grid nodes along the skeleton's bones (and its isolated nodes) as 6-connected
+// chains, kept off the grid's boundary.
+std::vector<std::size_t> seedNodes(const FieldGrid& grid, const SkeletonGraph& skeleton) {
+    std::vector<std::size_t> seeds;
+    const auto cellOf = [&](const Point& p) {
+        std::array<int, 3> c{};
+        for (int a = 0; a < 3; ++a)
+            c[a] = std::clamp(int(std::lround((p[a] - grid.origin[a]) / grid.spacing)), 1, grid.nodes[a] - 2);
+        return c;
+    };
+    const auto mark = [&](const std::array<int, 3>& c) { seeds.push_back(grid.index(c[0], c[1], c[2])); };
+    for (const Point& node : skeleton.nodes) mark(cellOf(node));
+    for (const Edge& e : skeleton.edges) {
+        const Point a = skeleton.nodes[e[0]], b = skeleton.nodes[e[1]];
+        const int steps = std::max(1, int(std::ceil(4 * (b - a).norm() / grid.spacing)));
+        std::array<int, 3> at = cellOf(a);
+        for (int s = 1; s <= steps; ++s) {
+            const std::array<int, 3> next = cellOf(a + (b - a) * (double(s) / steps));
+            while (at != next) {  // one axis at a time: consecutive seeds share a face
+                int axis = 0;
+                for (int c = 1; c < 3; ++c)
+                    if (std::abs(next[c] - at[c]) > std::abs(next[axis] - at[axis])) axis = c;
+                at[axis] += next[axis] > at[axis] ? 1 : -1;
+                mark(at);
+            }
+        }
+    }
+    std::sort(seeds.begin(), seeds.end());
+    seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
+    return seeds;
+}
+
+// Grows the region from the seeds through the nodes with negative values, most negative
+// first, taking simple points only. A node refused now is looked at again whenever one of
+// its neighbours joins.
+void grow(Region& region, const std::vector<double>& values, const std::vector<std::size_t>& seeds) {
+    using Entry = std::pair<double, std::size_t>;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> candidates;
+    const auto offerNeighbours = [&](std::size_t n) {
+        for (int p = 0; p < 27; ++p) {
+            const std::size_t m = region.neighbour(n, p);
+            if (p != kCentre && values[m] < 0 && !region.contains(m) && region.interior(m)) candidates.push({values[m], m});
+        }
+    };
+    for (std::size_t s : seeds) region.add(s);
+    for (std::size_t s : seeds) offerNeighbours(s);
+    while (!candidates.empty()) {
+        const std::size_t n = candidates.top().second;
+        candidates.pop();
+        if (region.contains(n) || !isSimple(region.insideMask(n))) continue;
+        region.add(n);
+        offerNeighbours(n);
+    }
+}
+
+// Where two inside nodes of a cell touch only along a face diagonal or through the cell's
+// centre, marching cubes decides from the values whether they connect. The region is
+// 6-connected: make the outside values dominate there, signs unchanged.
+void separateDiagonalContacts(const FieldGrid& grid, std::vector<double>& values) {
+    const double inside = -kNudgedInside * grid.spacing, outside = kJustOutside * grid.spacing;
+    // Corner c of a cell is at (c & 1, c >> 1 & 1, c >> 2); two corners share a cell edge
+    // when they differ in one bit.
+    for (int k = 0; k + 1 < grid.nodes[2]; ++k)
+        for (int j = 0; j + 1 < grid.nodes[1]; ++j)
+            for (int i = 0; i + 1 < grid.nodes[0]; ++i) {
+                std::array<std::size_t, 8> corner{};
+                unsigned in = 0;
+                for (int c = 0; c < 8; ++c) {
+                    corner[c] = grid.index(i + (c & 1), j + (c >> 1 & 1), k + (c >> 2));
+                    if (values[corner[c]] < 0) in |= 1u << c;
+                }
+                if (in == 0 || in == 0xFF) continue;
+                // The inside corners' components along cell edges; several means diagonal contacts.
+                unsigned left = in;
+                int components = 0;
+                while (left) {
+                    unsigned component = left & (~left + 1), grown = 0;
+                    while (grown != component) {
+                        grown = component;
+                        for (int c = 0; c < 8; ++c)
+                            if ((component >> c) & 1u)
+                                for (int bit = 0; bit < 3; ++bit) component |= (1u << (c ^ (1 << bit))) & in;
+                    }
+                    left &= ~component;
+                    ++components;
+                }
+                if (components < 2) continue;
+                for (int c = 0; c < 8; ++c) {
+                    double& v = values[corner[c]];
+                    v = v < 0 ? std::max(v, inside) : std::max(v, outside);
+                }
+            }
+}
+
+}  // namespace
+
+TopologyControl constrainToSkeletonTopology(const FieldGrid& grid, const SkeletonGraph& skeleton,
+                                            std::vector<double>& values) {
+    TopologyControl result;
+    Region region(grid);
+    const std::vector<std::size_t> seeds = seedNodes(grid, skeleton);
+    result.seedNodes = seeds.size();
+    // The skeleton is inside by definition, even where a bone is thinner than a cell.
+    for (std::size_t s : seeds) values[s] = std::min(values[s], -kNudgedInside * grid.spacing);
+    grow(region, values, seeds);
+
+    std::vector<std::size_t> removed;
+    for (std::size_t n = 0; n < values.size(); ++n) {
+        if (values[n] >= 0) continue;
+        ++result.insideNodes;
+        if (region.contains(n)) continue;
+        values[n] = kJustOutside * grid.spacing;
+        removed.push_back(n);
+    }
+    result.removedNodes = removed.size();
+
+    // The largest 26-connected group of removed nodes: where the data and the skeleton disagree most.
+    std::vector<std::uint8_t> isRemoved(values.size(), 0), seen(values.size(), 0);
+    for (std::size_t n : removed) isRemoved[n] = 1;
+    for (std::size_t start : removed) {
+        if (seen[start]) continue;
+        std::vector<std::size_t> group{start};
+        seen[start] = 1;
+        Point sum = Point::Zero();
+        for (std::size_t g = 0; g < group.size(); ++g) {
+            const std::size_t n = group[g];
+            const int i = int(n % grid.nodes[0]), j = int(n / grid.nodes[0] % grid.nodes[1]),
+                      k = int(n / (std::size_t(grid.nodes[0]) * grid.nodes[1]));
+            sum += grid.position(i, j, k);
+            for (int p = 0; p < 27; ++p) {
+                const std::size_t m = region.neighbour(n, p);
+                if (p != kCentre && region.interior(n) && isRemoved[m] && !seen[m]) {
+                    seen[m] = 1;
+                    group.push_back(m);
+                }
+            }
+        }
+        if (group.size() > result.largestRemoval) {
+            result.largestRemoval = group.size();
+            result.largestRemovalCentre = sum / double(group.size());
+        }
+    }
+    separateDiagonalContacts(grid, values);
+    return result;
+}
+
+}  // namespace pcskeleton
