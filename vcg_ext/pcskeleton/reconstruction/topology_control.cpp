@@ -12,11 +12,15 @@ namespace pcskeleton {
 
 namespace {
 
-// How far outside a removed inside node is put, and the margins that make marching cubes
-// separate diagonal contacts, in cells. Values well above the thousandth of a cell that
-// extraction pushes off zero; small enough that the surface stays within the cell.
+// How far outside a removed inside node is put, in cells: well above the thousandth of a
+// cell that extraction pushes off zero, small enough that the surface stays near the node.
 constexpr double kJustOutside = 0.1;
-constexpr double kNudgedInside = 0.05;
+// In a cell whose inside or outside corners touch only diagonally, the inside values are
+// brought to at most this close to zero and the outside ones to at least kNudgedOutside:
+// then every ambiguity test of marching cubes (face saddles, the cell's centre) comes out
+// "outside", which connects the outside diagonally and not the inside, as (6, 26) does.
+constexpr double kNudgedInside = 0.03;
+constexpr double kNudgedOutside = 0.3;
 
 // A node's 3x3x3 neighbourhood: position p = (dx+1) + 3(dy+1) + 9(dz+1), 13 the node itself.
 constexpr int kCentre = 13;
@@ -181,11 +185,29 @@ void grow(Region& region, const std::vector<double>& values, const std::vector<s
     }
 }
 
-// Where two inside nodes of a cell touch only along a face diagonal or through the cell's
-// centre, marching cubes decides from the values whether they connect. The region is
-// 6-connected: make the outside values dominate there, signs unchanged.
+// Corners of a cell (bits of `corners`) in groups joined along the cell's edges.
+int edgeComponents(unsigned corners) {
+    int components = 0;
+    while (corners) {
+        unsigned component = corners & (~corners + 1), grown = 0;
+        while (grown != component) {
+            grown = component;
+            for (int c = 0; c < 8; ++c)
+                if ((component >> c) & 1u)
+                    for (int bit = 0; bit < 3; ++bit) component |= (1u << (c ^ (1 << bit))) & corners;
+        }
+        corners &= ~component;
+        ++components;
+    }
+    return components;
+}
+
+// Where two inside (or two outside) corners of a cell touch only along a face diagonal or
+// through the cell's centre, marching cubes decides from the values whether they connect.
+// The region is 6-connected and the outside 26-connected: make the outside values dominate
+// there, signs unchanged.
 void separateDiagonalContacts(const FieldGrid& grid, std::vector<double>& values) {
-    const double inside = -kNudgedInside * grid.spacing, outside = kJustOutside * grid.spacing;
+    const double inside = -kNudgedInside * grid.spacing, outside = kNudgedOutside * grid.spacing;
     // Corner c of a cell is at (c & 1, c >> 1 & 1, c >> 2); two corners share a cell edge
     // when they differ in one bit.
     for (int k = 0; k + 1 < grid.nodes[2]; ++k)
@@ -198,21 +220,7 @@ void separateDiagonalContacts(const FieldGrid& grid, std::vector<double>& values
                     if (values[corner[c]] < 0) in |= 1u << c;
                 }
                 if (in == 0 || in == 0xFF) continue;
-                // The inside corners' components along cell edges; several means diagonal contacts.
-                unsigned left = in;
-                int components = 0;
-                while (left) {
-                    unsigned component = left & (~left + 1), grown = 0;
-                    while (grown != component) {
-                        grown = component;
-                        for (int c = 0; c < 8; ++c)
-                            if ((component >> c) & 1u)
-                                for (int bit = 0; bit < 3; ++bit) component |= (1u << (c ^ (1 << bit))) & in;
-                    }
-                    left &= ~component;
-                    ++components;
-                }
-                if (components < 2) continue;
+                if (edgeComponents(in) < 2 && edgeComponents(~in & 0xFFu) < 2) continue;  // no ambiguity
                 for (int c = 0; c < 8; ++c) {
                     double& v = values[corner[c]];
                     v = v < 0 ? std::max(v, inside) : std::max(v, outside);
