@@ -199,6 +199,11 @@ grep -q "^result: 1 component, genus 1, closed 2-manifold" torus_ring.log \
   || { cat torus_ring.log; fail "the closed ring skeleton did not give a closed genus-1 surface"; }
 counts=$(sed -n 's/^pcskeleton: surface torus_ring.off: \([0-9]*\) vertices, \([0-9]*\) triangles$/\1 \2 0/p' torus_ring.log)
 [ "$(sed -n 2p torus_ring.off)" = "$counts" ] || fail "torus_ring.off's header is not '$counts'"
+grep -q "^topology: the skeleton's, [0-9]* of the fit's [0-9]* inside grid nodes cut away" torus_ring.log \
+  || { cat torus_ring.log; fail "the report does not say the topology guarantee ran"; }
+"$PCSKELETON" torus.ply --skeleton ring.ply --surface torus_plain.off --data-topology 2>torus_plain.log
+grep -q "^result: 1 component, genus 1, closed 2-manifold" torus_plain.log && ! grep -q "^topology:" torus_plain.log \
+  || { cat torus_plain.log; fail "--data-topology did not give the plain fit"; }
 "$PCSKELETON" torus.ply --skeleton ring.ply --surface torus_ring.ply --quiet
 head -c 300 torus_ring.ply | grep -q "element face" || fail "the PLY surface has no faces"
 expect_error 2 "--skeleton is for reconstruction: add --surface" torus.ply --skeleton ring.ply
