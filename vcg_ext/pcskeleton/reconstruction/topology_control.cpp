@@ -130,9 +130,12 @@ private:
     std::array<std::ptrdiff_t, 27> stride_{};
 };
 
-// The grid nodes along the skeleton's bones (and its isolated nodes) as 6-connected
-// chains, kept off the grid's boundary.
-std::vector<std::size_t> seedNodes(const FieldGrid& grid, const SkeletonGraph& skeleton) {
+// The skeleton drawn into the region as 6-connected chains of grid nodes, with its own
+// topology: the bones of a spanning forest are drawn node by node taking simple points
+// only (a chain that zig-zags within a cell or passes a cell from another bone must not
+// close a loop the skeleton has not), then each remaining bone, which closes one of the
+// skeleton's cycles, is drawn whole. Kept off the grid's boundary.
+std::vector<std::size_t> drawSkeleton(const FieldGrid& grid, const SkeletonGraph& skeleton, Region& region) {
     std::vector<std::size_t> seeds;
     const auto cellOf = [&](const Point& p) {
         std::array<int, 3> c{};
@@ -140,30 +143,56 @@ std::vector<std::size_t> seedNodes(const FieldGrid& grid, const SkeletonGraph& s
             c[a] = std::clamp(int(std::lround((p[a] - grid.origin[a]) / grid.spacing)), 1, grid.nodes[a] - 2);
         return c;
     };
-    const auto mark = [&](const std::array<int, 3>& c) { seeds.push_back(grid.index(c[0], c[1], c[2])); };
-    for (const Point& node : skeleton.nodes) mark(cellOf(node));
-    for (const Edge& e : skeleton.edges) {
-        const Point a = skeleton.nodes[e[0]], b = skeleton.nodes[e[1]];
+    const auto take = [&](const std::array<int, 3>& c, bool evenIfNotSimple) {
+        const std::size_t n = grid.index(c[0], c[1], c[2]);
+        if (region.contains(n) || (!evenIfNotSimple && !isSimple(region.insideMask(n)))) return;
+        region.add(n);
+        seeds.push_back(n);
+    };
+    // One axis at a time from a to b, so that consecutive nodes share a face.
+    const auto drawBone = [&](const Point& a, const Point& b, bool evenIfNotSimple) {
         const int steps = std::max(1, int(std::ceil(4 * (b - a).norm() / grid.spacing)));
         std::array<int, 3> at = cellOf(a);
         for (int s = 1; s <= steps; ++s) {
             const std::array<int, 3> next = cellOf(a + (b - a) * (double(s) / steps));
-            while (at != next) {  // one axis at a time: consecutive seeds share a face
+            while (at != next) {
                 int axis = 0;
                 for (int c = 1; c < 3; ++c)
                     if (std::abs(next[c] - at[c]) > std::abs(next[axis] - at[axis])) axis = c;
                 at[axis] += next[axis] > at[axis] ? 1 : -1;
-                mark(at);
+                take(at, evenIfNotSimple);
+            }
+        }
+    };
+    // Spanning forest, breadth first from each component's first node: a bone is drawn
+    // from a node already drawn, so its chain starts in the region.
+    const std::vector<std::vector<int>> neighbours = adjacencyLists(skeleton.nodeCount(), skeleton.edges);
+    std::vector<int> parent(skeleton.nodeCount(), -2);  // -2 not reached, -1 a root
+    for (std::size_t root = 0; root < skeleton.nodeCount(); ++root) {
+        if (parent[root] != -2) continue;
+        parent[root] = -1;
+        take(cellOf(skeleton.nodes[root]), true);  // a new component
+        std::vector<int> queue{int(root)};
+        for (std::size_t q = 0; q < queue.size(); ++q) {
+            const int from = queue[q];
+            for (int to : neighbours[from]) {
+                if (parent[to] != -2) continue;
+                parent[to] = from;
+                queue.push_back(to);
+                drawBone(skeleton.nodes[from], skeleton.nodes[to], false);
             }
         }
     }
-    std::sort(seeds.begin(), seeds.end());
-    seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
+    // The other bones each close one of the skeleton's independent cycles.
+    for (const Edge& e : skeleton.edges) {
+        if (parent[e[0]] == e[1] || parent[e[1]] == e[0]) continue;
+        drawBone(skeleton.nodes[e[0]], skeleton.nodes[e[1]], true);
+    }
     return seeds;
 }
 
-// Grows the region from the seeds through the nodes with negative values, most negative
-// first, taking simple points only. A node refused now is looked at again whenever one of
+// Grows the region from the seeds (already in it) through the nodes with negative values,
+// most negative first, taking simple points only. A node refused now is looked at again whenever one of
 // its neighbours joins.
 void grow(Region& region, const std::vector<double>& values, const std::vector<std::size_t>& seeds) {
     using Entry = std::pair<double, std::size_t>;
@@ -174,7 +203,6 @@ void grow(Region& region, const std::vector<double>& values, const std::vector<s
             if (p != kCentre && values[m] < 0 && !region.contains(m) && region.interior(m)) candidates.push({values[m], m});
         }
     };
-    for (std::size_t s : seeds) region.add(s);
     for (std::size_t s : seeds) offerNeighbours(s);
     while (!candidates.empty()) {
         const std::size_t n = candidates.top().second;
@@ -234,7 +262,7 @@ TopologyControl constrainToSkeletonTopology(const FieldGrid& grid, const Skeleto
                                             std::vector<double>& values) {
     TopologyControl result;
     Region region(grid);
-    const std::vector<std::size_t> seeds = seedNodes(grid, skeleton);
+    const std::vector<std::size_t> seeds = drawSkeleton(grid, skeleton, region);
     result.seedNodes = seeds.size();
     // The skeleton is inside by definition, even where a bone is thinner than a cell.
     for (std::size_t s : seeds) values[s] = std::min(values[s], -kNudgedInside * grid.spacing);
