@@ -183,9 +183,15 @@ std::vector<std::size_t> drawSkeleton(const FieldGrid& grid, const SkeletonGraph
             }
         }
     }
-    // The other bones each close one of the skeleton's independent cycles.
+    // The other bones each close one of the skeleton's independent cycles: drawn whole, but
+    // only between ends the forest reached (a chain from an end left out would start a part
+    // of its own; the cycle is then missing and the caller's check says so).
+    const auto drawn = [&](int node) {
+        const std::array<int, 3> c = cellOf(skeleton.nodes[node]);
+        return region.contains(grid.index(c[0], c[1], c[2]));
+    };
     for (const Edge& e : skeleton.edges) {
-        if (parent[e[0]] == e[1] || parent[e[1]] == e[0]) continue;
+        if (parent[e[0]] == e[1] || parent[e[1]] == e[0] || !drawn(e[0]) || !drawn(e[1])) continue;
         drawBone(skeleton.nodes[e[0]], skeleton.nodes[e[1]], true);
     }
     return seeds;
