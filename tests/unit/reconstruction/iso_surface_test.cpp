@@ -1,5 +1,6 @@
 // The zero level set of a grid field and its topology: closed surfaces of known genus from
 // analytic fields, and the topology numbers on meshes built by hand.
+#include "support/grid_fields.h"
 #include <pcskeleton/core/errors.h>
 #include <pcskeleton/reconstruction/iso_surface.h>
 
@@ -11,21 +12,10 @@
 namespace pcskeleton {
 namespace {
 
-// A grid of `cells` cells per side over [-1.2, 1.2]^3, sampled from `field`.
-std::vector<double> sample(const FieldGrid& grid, const std::function<double(const Point&)>& field) {
-    std::vector<double> values(grid.size());
-    for (int k = 0; k < grid.nodes[2]; ++k)
-        for (int j = 0; j < grid.nodes[1]; ++j)
-            for (int i = 0; i < grid.nodes[0]; ++i) values[grid.index(i, j, k)] = field(grid.position(i, j, k));
-    return values;
-}
+FieldGrid cube(int cells) { return shapes::cubeGrid(cells, 1.2); }
 
-FieldGrid cube(int cells) {
-    FieldGrid grid;
-    grid.origin = Point::Constant(-1.2);
-    grid.spacing = 2.4 / cells;
-    grid.nodes = {cells + 1, cells + 1, cells + 1};
-    return grid;
+std::vector<double> sample(const FieldGrid& grid, const std::function<double(const Point&)>& field) {
+    return shapes::sampleField(grid, field);
 }
 
 double signedVolume(const TriangleMesh& mesh) {

@@ -1,3 +1,4 @@
+#include "support/grid_fields.h"
 #include <pcskeleton/reconstruction/iso_surface.h>
 #include <pcskeleton/reconstruction/topology_control.h>
 
@@ -13,21 +14,10 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// A grid of `cells` cells over [-1.6, 1.6]^3 and a field sampled from `distance`.
-FieldGrid cube(int cells) {
-    FieldGrid grid;
-    grid.spacing = 3.2 / cells;
-    grid.origin = Point(-1.6, -1.6, -1.6);
-    grid.nodes = {cells + 1, cells + 1, cells + 1};
-    return grid;
-}
+FieldGrid cube(int cells) { return shapes::cubeGrid(cells, 1.6); }
 
 std::vector<double> sample(const FieldGrid& grid, const std::function<double(const Point&)>& distance) {
-    std::vector<double> values(grid.size());
-    for (int k = 0; k < grid.nodes[2]; ++k)
-        for (int j = 0; j < grid.nodes[1]; ++j)
-            for (int i = 0; i < grid.nodes[0]; ++i) values[grid.index(i, j, k)] = distance(grid.position(i, j, k));
-    return values;
+    return shapes::sampleField(grid, distance);
 }
 
 double torus(const Point& p) { return std::hypot(std::hypot(p.x(), p.y()) - 1.0, p.z()) - 0.3; }

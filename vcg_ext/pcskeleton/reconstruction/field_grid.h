@@ -15,6 +15,10 @@ struct FieldGrid {
 
     std::size_t size() const { return std::size_t(nodes[0]) * nodes[1] * nodes[2]; }
     std::size_t index(int i, int j, int k) const { return std::size_t(i) + std::size_t(nodes[0]) * (j + std::size_t(nodes[1]) * k); }
+    // The (i, j, k) of index n: the inverse of index().
+    std::array<int, 3> coordinates(std::size_t n) const {
+        return {int(n % nodes[0]), int(n / nodes[0] % nodes[1]), int(n / (std::size_t(nodes[0]) * nodes[1]))};
+    }
     Point position(int i, int j, int k) const { return origin + spacing * Point(i, j, k); }
     bool isBoundary(int i, int j, int k) const {
         return i == 0 || j == 0 || k == 0 || i == nodes[0] - 1 || j == nodes[1] - 1 || k == nodes[2] - 1;

@@ -119,8 +119,7 @@ public:
         return mask;
     }
     bool interior(std::size_t n) const {
-        const int i = int(n % grid_.nodes[0]), j = int(n / grid_.nodes[0] % grid_.nodes[1]),
-                  k = int(n / (std::size_t(grid_.nodes[0]) * grid_.nodes[1]));
+        const auto [i, j, k] = grid_.coordinates(n);
         return !grid_.isBoundary(i, j, k);
     }
 
@@ -294,12 +293,12 @@ TopologyControl constrainToSkeletonTopology(const FieldGrid& grid, const Skeleto
         Point sum = Point::Zero();
         for (std::size_t g = 0; g < group.size(); ++g) {
             const std::size_t n = group[g];
-            const int i = int(n % grid.nodes[0]), j = int(n / grid.nodes[0] % grid.nodes[1]),
-                      k = int(n / (std::size_t(grid.nodes[0]) * grid.nodes[1]));
+            const auto [i, j, k] = grid.coordinates(n);
             sum += grid.position(i, j, k);
+            // Removed nodes had negative values, so none is on the boundary: all 26 neighbours exist.
             for (int p = 0; p < 27; ++p) {
                 const std::size_t m = region.neighbour(n, p);
-                if (p != kCentre && region.interior(n) && isRemoved[m] && !seen[m]) {
+                if (p != kCentre && isRemoved[m] && !seen[m]) {
                     seen[m] = 1;
                     group.push_back(m);
                 }
