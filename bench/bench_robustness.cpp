@@ -23,6 +23,8 @@
 //                                       the default pipeline without refinement
 //        bench_robustness [POINTS] --no-link-limit
 //                                       the default pipeline without the stretched-link limit
+//        bench_robustness [POINTS] --gap-limit X
+//                                       gaps in the data bridged up to X node spacings (0: none)
 //        bench_robustness [POINTS] --full-resolution | --contracted-points N
 //                                       every point contracted, or at most N (the
 //                                       multi-resolution pipeline's subsample; default 20000)
@@ -450,7 +452,7 @@ int outlierDetection(const std::vector<Subject>& subjects, std::size_t n, const 
 
 const char* const kUsage =
     "usage: bench_robustness [POINTS] [--paper] [--no-refine] [--no-recentre] [--extend-tips] [--no-link-limit]\n"
-    "                        [--full-resolution] [--contracted-points N] [--shape TEXT]\n"
+    "                        [--gap-limit X] [--full-resolution] [--contracted-points N] [--shape TEXT]\n"
     "       bench_robustness --outliers [POINTS [ISOLATION [CLUSTER [LOCAL]]]]\n"
     "       bench_robustness --write SHAPE CONDITION FILE [POINTS]\n"
     "The table of every shape under every scan defect (the default), the outlier detector's scores, or one\n"
@@ -461,7 +463,7 @@ int main(int argc, char** argv) {
     const std::set<std::string> flags{"--paper",         "--no-refine",         "--no-recentre",
                                       "--extend-tips",   "--no-link-limit",     "--full-resolution",
                                       "--outliers",      "--write",             "--contracted-points",
-                                      "--shape"};
+                                      "--shape",         "--gap-limit"};
     for (const std::string& arg : args) {
         if (arg == "--help" || arg == "-h") {
             std::printf("%s", kUsage);
@@ -478,7 +480,7 @@ int main(int argc, char** argv) {
     std::size_t n = 6000;
     std::vector<double> numbers;
     for (std::size_t a = write ? 4 : 0; a < args.size(); ++a) {
-        if (args[a] == "--contracted-points" || args[a] == "--shape") ++a;  // its value is not a size
+        if (args[a] == "--contracted-points" || args[a] == "--shape" || args[a] == "--gap-limit") ++a;  // not a size
         else if (args[a].rfind("--", 0) != 0) numbers.push_back(std::atof(args[a].c_str()));
     }
     if (!numbers.empty()) n = std::size_t(numbers[0]);
@@ -487,6 +489,8 @@ int main(int argc, char** argv) {
     if (std::find(args.begin(), args.end(), "--no-recentre") != args.end()) pipeline.thinning.recentre = false;
     if (std::find(args.begin(), args.end(), "--extend-tips") != args.end()) pipeline.thinning.extendTips = true;
     if (std::find(args.begin(), args.end(), "--no-link-limit") != args.end()) pipeline.thinning.linkLimit = 0;
+    const auto gapLimit = std::find(args.begin(), args.end(), "--gap-limit");
+    if (gapLimit != args.end() && gapLimit + 1 != args.end()) pipeline.thinning.gapLimit = std::atof((gapLimit + 1)->c_str());
     if (std::find(args.begin(), args.end(), "--full-resolution") != args.end()) pipeline.resolution.maxContractedPoints = 0;
     // --shape TEXT: only the shapes whose name contains TEXT (e.g. the slow ones at 1M points).
     const auto shapeFilter = std::find(args.begin(), args.end(), "--shape");

@@ -1,6 +1,7 @@
 #include "pcskeleton/curve_skeleton.h"
 
 #include "pcskeleton/analysis/node_recentering.h"
+#include "pcskeleton/analysis/gap_bridging.h"
 #include "pcskeleton/analysis/skeleton_refinement.h"
 #include "pcskeleton/internal/machine_memory.h"
 #include "pcskeleton/internal/stopwatch.h"
@@ -89,6 +90,9 @@ void thinAndEmbed(const NormalizedCloud& cloud, const OneRings& rings, const Poi
     }
     TipExtensionReport extension;
     if (parameters.extendTips) extension = extendTips(result.skeleton, points, nodeSpacing);
+    // After tip extension: an extended limb ends at the edge of its data, so the bridge spans
+    // the gap in the data and nothing more.
+    const GapBridgingReport bridging = bridgeGaps(result.skeleton, nodeSpacing, parameters.gapLimit);
     result.quality = assessSkeleton(result.skeleton, cloud, rings, contracted, nodeSpacing);
     // A re-centred node is off its points' centre by design, not outside the shape.
     std::vector<int>& outside = result.quality.nodesOutside;
@@ -97,6 +101,8 @@ void thinAndEmbed(const NormalizedCloud& cloud, const OneRings& rings, const Poi
     result.quality.recentering = recentering;
     result.quality.refined = parameters.refine;
     result.quality.refinement = refinement;
+    result.quality.gapsBridged = parameters.gapLimit > 0;
+    result.quality.gapBridging = bridging;
     result.quality.tipsExtended = parameters.extendTips;
     result.quality.tipExtension = extension;
     const ContractionResult& c = result.contraction;
@@ -114,6 +120,10 @@ void checkThinningParameters(const ThinningParameters& parameters) {
     if (!(parameters.linkLimit >= 0.0 && std::isfinite(parameters.linkLimit))) {
         throw InvalidInput(Problem::aboutParameter(
             Parameter::LinkLimit, "must be 0 (every link connects, the paper's rule) or a positive number of node spacings."));
+    }
+    if (!(parameters.gapLimit >= 0.0 && std::isfinite(parameters.gapLimit))) {
+        throw InvalidInput(Problem::aboutParameter(
+            Parameter::GapLimit, "must be 0 (no bridge, the paper's skeleton) or a positive number of node spacings."));
     }
     if (!(parameters.sampleRadius > 0.0 && parameters.sampleRadius < 1.0)) {
         std::ostringstream requirement;

@@ -222,7 +222,8 @@ std::string describeFindings(const SkeletonQuality& q) {
            << (q.recentering.recentredNodes ? ", by " : "") << std::setprecision(3);
     if (q.recentred && q.recentering.recentredNodes) s << q.recentering.meanShift << " on average";
     if (q.recentred) s << ".\n";
-    s << "Refinement: " << (q.refined ? describe(q.refinement) : std::string("off")) << ".";
+    s << "Refinement: " << (q.refined ? describe(q.refinement) : std::string("off")) << ".\n";
+    s << "Gaps in the data: " << (q.gapsBridged ? describe(q.gapBridging) : std::string("off")) << ".";
     return s.str();
 }
 

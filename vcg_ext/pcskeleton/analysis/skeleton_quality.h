@@ -16,6 +16,7 @@
 #include "pcskeleton/contraction/laplacian_contraction.h"
 #include "pcskeleton/skeleton/skeleton_graph.h"
 #include "pcskeleton/analysis/node_recentering.h"
+#include "pcskeleton/analysis/gap_bridging.h"
 #include "pcskeleton/analysis/skeleton_refinement.h"
 #include "pcskeleton/analysis/tip_extension.h"
 #include "pcskeleton/core/advice.h"
@@ -70,6 +71,8 @@ struct SkeletonQuality {
     RecenteringReport recentering;
     bool refined = false;
     RefinementReport refinement;
+    bool gapsBridged = false;
+    GapBridgingReport gapBridging;
     bool tipsExtended = false;
     TipExtensionReport tipExtension;
 

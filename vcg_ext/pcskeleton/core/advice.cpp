@@ -36,6 +36,7 @@ std::string libraryParameterName(Parameter p) {
         case Parameter::OutlierClusterShare: return "the outlier cluster share";
         case Parameter::DenoisingPasses: return "the denoising passes";
         case Parameter::LinkLimit: return "the stretched-link limit";
+        case Parameter::GapLimit: return "the gap limit";
         case Parameter::ContractedPoints: return "the number of contracted points";
         case Parameter::SkeletonTopology: return "the skeleton's topology guarantee";
     }

@@ -37,6 +37,7 @@ enum class Parameter {
     OutlierClusterShare,
     DenoisingPasses,
     LinkLimit,
+    GapLimit,
     ContractedPoints,
     SkeletonTopology,  // the reconstruction keeps the skeleton's topology
 };

@@ -1,0 +1,128 @@
+// Gap bridging on hand-made pieces, and through the whole pipeline on a tube with a band of
+// missing data.
+#include <pcskeleton/analysis/gap_bridging.h>
+#include <pcskeleton/curve_skeleton.h>
+#include "support/hand_made_graphs.h"
+#include "support/sampled_shapes.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+using namespace pcskeleton;
+using namespace pcskeleton::graphs;
+
+namespace {
+
+// A chain along x from `from` in `count` steps of kSpacing, at height y; returns its first node.
+int addChain(SkeletonGraph& g, double from, int count, double y = 0.0) {
+    const int first = int(g.nodeCount());
+    for (int i = 0; i < count; ++i) {
+        g.nodes.emplace_back(from + kSpacing * i, y, 0);
+        g.radii.push_back(0.05);
+        if (i > 0) g.edges.push_back({first + i - 1, first + i});
+    }
+    return first;
+}
+
+// Two collinear pieces along x, nodes 0-4 (x 0..0.4) and 5-9 (x 0.7..1.1): a gap of 3 spacings.
+SkeletonGraph brokenChain() {
+    SkeletonGraph g;
+    addChain(g, 0.0, 5);
+    addChain(g, 0.7, 5);
+    normalizeEdges(g.edges);
+    return g;
+}
+
+PointList withoutSlab(const PointList& points, double fromZ, double toZ) {
+    PointList kept;
+    std::copy_if(points.begin(), points.end(), std::back_inserter(kept),
+                 [&](const Point& p) { return p.z() < fromZ || p.z() > toZ; });
+    return kept;
+}
+
+}  // namespace
+
+TEST(GapBridging, CollinearPiecesAcrossAGapAreJoinedTipToTip) {
+    SkeletonGraph g = brokenChain();
+    const GapBridgingReport report = bridgeGaps(g, kSpacing, 8.0);
+    ASSERT_EQ(report.bridges.size(), 1u) << describe(report);
+    EXPECT_EQ(report.bridges[0], (Edge{4, 5}));
+    EXPECT_NEAR(report.bridgeLengths[0], 0.3, 1e-12);
+    EXPECT_EQ(invariantViolation(g), "");
+    const SkeletonTopology t = analyseTopology(g);
+    EXPECT_EQ(t.components, 1) << describe(t);
+    EXPECT_EQ(t.cycles, 0) << describe(t);  // both tips point at the other piece: one bridge only
+    EXPECT_EQ(describe(report), "1 bridged, 0.3 long");
+}
+
+TEST(GapBridging, GapsLongerThanTheLimitAndALimitOfZeroBridgeNothing) {
+    for (double limit : {2.9, 0.0}) {
+        SkeletonGraph g = brokenChain();
+        const GapBridgingReport report = bridgeGaps(g, kSpacing, limit);
+        EXPECT_TRUE(report.bridges.empty()) << limit;
+        EXPECT_EQ(analyseTopology(g).components, 2) << limit;
+        EXPECT_EQ(describe(report), "none bridged");
+    }
+}
+
+TEST(GapBridging, PiecesSideBySideStayApart) {
+    // Two parallel chains 2 spacings apart: each tip points along its own chain.
+    SkeletonGraph g;
+    addChain(g, 0.0, 8);
+    addChain(g, 0.0, 8, 2 * kSpacing);
+    normalizeEdges(g.edges);
+    EXPECT_TRUE(bridgeGaps(g, kSpacing, 8.0).bridges.empty());
+    EXPECT_EQ(analyseTopology(g).components, 2);
+}
+
+TEST(GapBridging, JoinsTheNearestNodeAheadNotTheNearestNode) {
+    // Piece B: a node just beside the tip (outside the cone), and a chain straight ahead.
+    SkeletonGraph g;
+    addChain(g, 0.0, 5);                        // tip: node 4 at x 0.4, pointing along +x
+    const int ahead = addChain(g, 0.8, 3);      // nodes 5-7, 4 spacings ahead
+    g.nodes.emplace_back(0.4, 0.25, 0);         // node 8, 2.5 spacings to the side
+    g.radii.push_back(0.05);
+    g.edges.push_back({7, 8});
+    normalizeEdges(g.edges);
+    const GapBridgingReport report = bridgeGaps(g, kSpacing, 8.0);
+    ASSERT_EQ(report.bridges.size(), 1u) << describe(report);
+    EXPECT_EQ(report.bridges[0], (Edge{4, ahead}));
+}
+
+TEST(GapBridging, TubeWithABandOfMissingDataGivesOneSkeleton) {
+    // A tube of radius 0.1 and length 2 with no points for 0.9 < z < 1.1: the gap is about
+    // 5 node spacings long.
+    const PointList cloud = withoutSlab(shapes::cylinder(8000, 0.1, 2.0, /*capped=*/true), 0.9, 1.1);
+    const SkeletonResult bridged = computeCurveSkeleton(cloud);
+    const SkeletonTopology t = analyseTopology(bridged.skeleton);
+    EXPECT_EQ(t.components, 1) << describe(t);
+    EXPECT_EQ(t.tips, 2) << describe(t);
+    EXPECT_EQ(t.cycles, 0) << describe(t);
+    ASSERT_EQ(bridged.quality.gapBridging.bridges.size(), 1u);
+    for (int end : bridged.quality.gapBridging.bridges[0]) {
+        const Point& node = bridged.skeleton.nodes[std::size_t(end)];
+        EXPECT_LT(std::hypot(node.x(), node.y()), 0.03) << node.transpose();  // on the axis
+    }
+
+    SkeletonParameters paper;
+    paper.thinning.gapLimit = 0;
+    EXPECT_EQ(analyseTopology(computeCurveSkeleton(cloud, paper).skeleton).components, 2);
+}
+
+TEST(GapBridging, TwoSeparateParallelTubesStayTwoSkeletons) {
+    const shapes::Polyline twoTubes = {{Point(0, 0, 0), Point(0, 0, 1)}, {Point(0.3, 0, 0), Point(0.3, 0, 1)}};
+    const SkeletonResult result = computeCurveSkeleton(shapes::tube(twoTubes, 0.1, 8000));
+    EXPECT_EQ(analyseTopology(result.skeleton).components, 2);
+    EXPECT_TRUE(result.quality.gapBridging.bridges.empty());
+}
+
+TEST(GapBridging, ANegativeOrInfiniteLimitIsRefused) {
+    SkeletonParameters p;
+    for (double bad : {-1.0, std::numeric_limits<double>::infinity()}) {
+        p.thinning.gapLimit = bad;
+        EXPECT_THROW(checkThinningParameters(p.thinning), InvalidInput) << bad;
+    }
+}
