@@ -60,6 +60,7 @@ std::string optionOf(Parameter parameter) {
         case Parameter::OutlierClusterShare: return "--outlier-cluster";
         case Parameter::DenoisingPasses: return "--denoise";
         case Parameter::LinkLimit: return "--link-limit";
+        case Parameter::GapLimit: return "--gap-limit";
         case Parameter::ContractedPoints: return "--contracted-points (without --full-resolution)";
         case Parameter::Resolution: return "--resolution";
         case Parameter::SmoothWeight: return "--smooth-weight";
@@ -163,6 +164,10 @@ void printHelp() {
         "                        (parts that touch, noise across a gap): they connect their\n"
         "                        nodes only where nothing else does [%g]. Lower it if close\n"
         "                        parts get false loops; 0 = every neighbour connects (paper)\n"
+        "  --gap-limit X         where a limb points at another piece of the skeleton at most\n"
+        "                        X radii (--radius) ahead (a gap in the data: an occluded or\n"
+        "                        missing stretch), a bone joins them [%g]. Pieces side by\n"
+        "                        side are never joined; 0 = no bridge (paper)\n"
         "  --no-extend-tips      keep the tips where contraction left them (the paper's\n"
         "                        skeleton); by default each limb is extended to the end of\n"
         "                        its tip's points, since contraction shortens limbs\n"
@@ -201,7 +206,8 @@ void printHelp() {
         "                        need more [80%% of the machine's memory]\n"
         "  --paper               the paper's pipeline exactly: the same as --keep-outliers\n"
         "                        --denoise 0 --no-recentre --no-refine --no-extend-tips\n"
-        "                        --link-limit 0 --full-resolution (and --data-topology)\n"
+        "                        --link-limit 0 --gap-limit 0 --full-resolution (and\n"
+        "                        --data-topology)\n"
         "  --report FILE         also write the quality report to FILE\n"
         "  --force               replace output files that exist already (never the input)\n"
         "  --quiet               no progress and no summary on stderr\n"
@@ -216,7 +222,7 @@ void printHelp() {
         r.resolution, r.smoothWeight, r.surfaceWeight, r.skeletonWeight, r.outsideWeight, r.outsideRadii,
         c.neighbourCount, c.initialContractionWeight, c.initialAttractionWeight, c.contractionScale,
         c.maxContractionWeight, c.maxAttractionWeight, c.laplacianRowLimit, c.maxIterations, c.terminationThreshold,
-        t.sampleRadius, t.linkLimit, o.isolationFactor, o.localFactor, o.clusterShare, c.denoisingPasses,
+        t.sampleRadius, t.linkLimit, t.gapLimit, o.isolationFactor, o.localFactor, o.clusterShare, c.denoisingPasses,
         kPassesForNoisySurface, kNoisySurface, kMaximumDenoisingPasses, m.maxContractedPoints);
 }
 
@@ -307,6 +313,7 @@ bool parseArguments(int argc, char** argv, Options& options) {
         {"--threshold", [&](const std::string& v) { c.terminationThreshold = parseNumber("--threshold", v); }},
         {"--radius", [&](const std::string& v) { options.parameters.thinning.sampleRadius = parseNumber("--radius", v); }},
         {"--link-limit", [&](const std::string& v) { options.parameters.thinning.linkLimit = parseNumber("--link-limit", v); }},
+        {"--gap-limit", [&](const std::string& v) { options.parameters.thinning.gapLimit = parseNumber("--gap-limit", v); }},
         {"--outlier-isolation", [&](const std::string& v) { c.outliers.isolationFactor = parseNumber("--outlier-isolation", v); }},
         {"--outlier-local", [&](const std::string& v) { c.outliers.localFactor = parseNumber("--outlier-local", v); }},
         {"--outlier-cluster", [&](const std::string& v) { c.outliers.clusterShare = parseNumber("--outlier-cluster", v); }},

@@ -123,6 +123,11 @@ void addThinningParameters(RichParameterList& list) {
         "pulled to different bones (parts that touch, noise across a gap): they connect their nodes only where "
         "nothing else does, so they close no false loop. Lower it if close parts still get false loops; 0 lets "
         "every neighbour pair connect, as in the paper."));
+    list.addParam(RichFloat("gapLimit", float(d.gapLimit), parameterLabel(Parameter::GapLimit),
+        "Where the data has a gap across a limb (an occluded stretch of a scan, a missing patch), the skeleton "
+        "comes out in pieces. A limb pointing at another piece at most this many node spacings ahead is joined "
+        "to it by a bone. Pieces that lie side by side are never joined. Raise it for wider gaps, lower it if "
+        "separate objects get joined; 0 joins nothing, as in the paper."));
     list.addParam(RichBool("extendTips", d.extendTips, "Extend tips to the shape's ends",
         "Contraction pulls the ends of limbs inwards, so the skeleton stops short of them. This extends every "
         "limb (not the short spurs) along its direction to the farthest of its tip's points, with a new end node. "
@@ -154,6 +159,7 @@ pcskeleton::ThinningParameters readThinningParameters(const RichParameterList& l
     pcskeleton::ThinningParameters p;
     p.sampleRadius = list.getFloat("sampleRadius");
     p.linkLimit = list.getFloat("linkLimit");
+    p.gapLimit = list.getFloat("gapLimit");
     p.extendTips = list.getBool("extendTips");
     p.recentre = list.getBool("recentre");
     p.refine = list.getBool("refine");

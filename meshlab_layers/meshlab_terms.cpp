@@ -26,6 +26,7 @@ QString parameterLabel(Parameter parameter) {
         case Parameter::OutlierClusterShare: return "Outlier cluster share";
         case Parameter::DenoisingPasses: return "Denoising passes";
         case Parameter::LinkLimit: return "Stretched-link limit (node spacings)";
+        case Parameter::GapLimit: return "Gap limit (node spacings)";
         case Parameter::ContractedPoints: return "the number of contracted points (untick 'Full resolution')";
         case Parameter::SkeletonTopology: return "Keep the skeleton's topology";
     }

@@ -106,10 +106,27 @@ coarse=$($GRAPH show knot_coarse.ply | sed 's/.*nodes.: \([0-9]*\).*/\1/')
 fine=$($GRAPH show knot.ply | sed 's/.*nodes.: \([0-9]*\).*/\1/')
 [ "$coarse" -lt "$fine" ] || fail "--radius 0.05 gave $coarse nodes, not fewer than the default's $fine"
 
+# A tube with a band of missing data (0.9 < z < 1.1): one skeleton across the gap by
+# default, two pieces with --gap-limit 0 (the paper's).
+/usr/bin/python3 - gapped_tube.xyz <<'PY'
+import math, random, sys
+random.seed(3)
+with open(sys.argv[1], "w") as out:
+    for _ in range(8000):
+        z, a = random.uniform(0, 2), random.uniform(0, 2 * math.pi)
+        if not 0.9 < z < 1.1: out.write(f"{0.1 * math.cos(a)} {0.1 * math.sin(a)} {z}\n")
+PY
+"$PCSKELETON" gapped_tube.xyz -o gapped.ply --report gapped.txt --quiet
+$GRAPH check gapped.ply --cycles 0 --tips 2 --components 1
+grep -q "^Gaps in the data: 1 bridged, 0.[0-9]* long.$" gapped.txt || fail "the report does not give the bridged gap"
+"$PCSKELETON" gapped_tube.xyz -o gapped_paper.ply --gap-limit 0 --report gapped_paper.txt --quiet
+$GRAPH check gapped_paper.ply --components 2
+grep -q "^Gaps in the data: off.$" gapped_paper.txt || fail "--gap-limit 0 still bridges"
+
 # --help documents every option with its default.
 "$PCSKELETON" --help >help.txt
 for option in --contracted --correspondence --k --wl --wh --sl --max-wl --max-wh --row-limit --iterations \
-              --threshold --radius --link-limit --no-extend-tips --refine --no-refine --no-recentre --keep-outliers --outlier-isolation \
+              --threshold --radius --link-limit --gap-limit --no-extend-tips --refine --no-refine --no-recentre --keep-outliers --outlier-isolation \
               --outlier-local --outlier-cluster --denoise --contracted-points --full-resolution --memory-limit \
               --paper --report --force --quiet; do
   grep -q -- "$option" help.txt || fail "--help does not document $option"
@@ -118,6 +135,8 @@ grep -q "\[0.02\]" help.txt || fail "--help does not give the radius default"
 grep -q "apart were pulled to different bones" help.txt && grep -q "\[4\]" help.txt \
   || fail "--help does not explain --link-limit with its default"
 grep -q "points \[15000\]" help.txt || fail "--help does not give the --contracted-points default"
+grep -q "ahead (a gap in the data" help.txt && grep -q "a bone joins them \[8\]" help.txt \
+  || fail "--help does not explain --gap-limit with its default"
 
 # Bad input: non-zero exit and a one-line reason; nothing written.
 expect_error() {  # exit code, text in the message, arguments...
@@ -145,6 +164,7 @@ expect_error 1 "^pcskeleton: --radius must be a fraction" $M/knot.off -o out.ply
 expect_error 1 "^pcskeleton: --sl must be at least 1" $M/knot.off -o out.ply --sl 0.5
 expect_error 1 "^pcskeleton: --denoise must be between 0 (off) and 10, or -1" $M/knot.off -o out.ply --denoise 11
 expect_error 1 "^pcskeleton: --link-limit must be 0 (every link connects" $M/knot.off -o out.ply --link-limit -1
+expect_error 1 "^pcskeleton: --gap-limit must be 0 (no bridge" $M/knot.off -o out.ply --gap-limit -1
 for i in $(seq 0 11); do echo "$((i % 4)) $((i / 4)) $((i % 3))"; done >few.xyz
 expect_error 1 "at least 21 are needed.*Lower --k" few.xyz -o out.ply --k 20
 [ ! -e out.ply ] || fail "a failed run wrote out.ply"

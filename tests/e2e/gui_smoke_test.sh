@@ -73,8 +73,11 @@ click 160 386         # Point Set
 click 640 436 1.5     # Compute Curve Skeleton (Laplacian Contraction)
 wait_window "Compute Curve Skeleton" 10
 shot skeleton-dialog
-click 324 920 5       # Apply
-click 112 920         # Close
+# The dialog's buttons, from its geometry (a new parameter moves them down): Close and
+# Apply share the bottom row.
+eval "$(xdotool search --onlyvisible --name "Compute Curve Skeleton" getwindowgeometry --shell | tr -d ' ')"
+click $((X + WIDTH * 3 / 4)) $((Y + HEIGHT - 21)) 5   # Apply
+click $((X + WIDTH / 4)) $((Y + HEIGHT - 21))         # Close
 shot skeleton-layer
 click 120 10          # Filters
 click 160 386         # Point Set

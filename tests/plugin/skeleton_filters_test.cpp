@@ -307,6 +307,9 @@ TEST_F(SkeletonFilterTest, TipExtensionAndRefinementAreParametersWithHelp) {
     ASSERT_TRUE(parameters.hasParameter("linkLimit"));
     EXPECT_FLOAT_EQ(parameters.getFloat("linkLimit"), 4.0f);
     EXPECT_FALSE(parameters.getParameterByName("linkLimit").fieldDescription().isEmpty());
+    ASSERT_TRUE(parameters.hasParameter("gapLimit"));
+    EXPECT_FLOAT_EQ(parameters.getFloat("gapLimit"), 8.0f);
+    EXPECT_FALSE(parameters.getParameterByName("gapLimit").fieldDescription().isEmpty());
 
     // Without extension, a capped tube's skeleton is shorter than with it.
     auto length = [&](bool extend) {
@@ -321,6 +324,27 @@ TEST_F(SkeletonFilterTest, TipExtensionAndRefinementAreParametersWithHelp) {
     const float paper = length(false), extended = length(true);
     EXPECT_GT(extended, paper + 0.05f);
     EXPECT_NEAR(extended, 1.2f, 0.03f);
+}
+
+TEST_F(SkeletonFilterTest, AGapInTheDataIsBridgedUnlessTheGapLimitIsZero) {
+    LogCapture capture(plugin);
+    pcskeleton::PointList gapped;
+    for (const pcskeleton::Point& q : pcskeleton::shapes::cylinder(8000, 0.1, 2.0, /*capped=*/true)) {
+        if (q.z() < 0.9 || q.z() > 1.1) gapped.push_back(q);
+    }
+    MeshModel* input = addPointLayer(gapped, "scan with a gap");
+    QAction* a = action(kSkeletonFilter);
+    RichParameterList p = defaults(a);
+    ASSERT_TRUE(apply(a, p)) << plugin->errorMsg().toStdString();
+    EXPECT_EQ(topologyOfLayer(*document.mm()).components, 1);
+    const QString log = capture.text(GLLogStream::FILTER);
+    EXPECT_TRUE(log.contains("Gaps in the data: 1 bridged")) << log.toStdString();
+
+    document.setCurrentMesh(input->id());
+    p.setValue("gapLimit", FloatValue(0.0f));
+    ASSERT_TRUE(apply(a, p)) << plugin->errorMsg().toStdString();
+    EXPECT_EQ(topologyOfLayer(*document.mm()).components, 2);
+    EXPECT_TRUE(capture.text(GLLogStream::FILTER).contains("Gaps in the data: off."));
 }
 
 TEST_F(SkeletonFilterTest, OutliersGetNoNodeUnlessThePapersPipelineIsAsked) {
