@@ -25,89 +25,82 @@ constexpr double kNudgedOutside = 0.3;
 // A node's 3x3x3 neighbourhood: position p = (dx+1) + 3(dy+1) + 9(dz+1), 13 the node itself.
 constexpr int kCentre = 13;
 
-struct Neighbourhood {
-    std::array<std::array<int, 3>, 27> offset{};
-    std::array<bool, 27> in18{};                          // |dx|+|dy|+|dz| <= 2, centre excluded
-    std::array<bool, 27> faceNeighbour{};                 // 6-adjacent to the centre
-    std::array<std::vector<int>, 27> faceAdjacent;        // 6-adjacent positions in the 18-neighbourhood
-    std::array<std::vector<int>, 27> adjacent;            // 26-adjacent positions, centre excluded
-};
+// Position masks over the 27 bits of a neighbourhood, for whole-mask moves by one step.
+constexpr std::uint32_t kAllPositions = (1u << 27) - 1;
 
-const Neighbourhood& neighbourhood() {
-    static const Neighbourhood n = [] {
-        Neighbourhood h;
-        for (int p = 0; p < 27; ++p) h.offset[p] = {p % 3 - 1, p / 3 % 3 - 1, p / 9 - 1};
-        const auto l1 = [&](int p) { return std::abs(h.offset[p][0]) + std::abs(h.offset[p][1]) + std::abs(h.offset[p][2]); };
-        for (int p = 0; p < 27; ++p) {
-            h.in18[p] = p != kCentre && l1(p) <= 2;
-            h.faceNeighbour[p] = l1(p) == 1;
-        }
-        for (int p = 0; p < 27; ++p) {
-            for (int q = 0; q < 27; ++q) {
-                if (q == p || q == kCentre || p == kCentre) continue;
-                int chebyshev = 0, manhattan = 0;
-                for (int a = 0; a < 3; ++a) {
-                    const int d = std::abs(h.offset[p][a] - h.offset[q][a]);
-                    chebyshev = std::max(chebyshev, d);
-                    manhattan += d;
-                }
-                if (chebyshev == 1) h.adjacent[p].push_back(q);
-                if (manhattan == 1 && h.in18[p] && h.in18[q]) h.faceAdjacent[p].push_back(q);
-            }
-        }
-        return h;
-    }();
-    return n;
+constexpr std::uint32_t positionsWhere(int axis, int coordinate) {
+    std::uint32_t mask = 0;
+    for (int p = 0; p < 27; ++p) {
+        const int c = axis == 0 ? p % 3 : axis == 1 ? p / 3 % 3 : p / 9;
+        if (c == coordinate) mask |= 1u << p;
+    }
+    return mask;
 }
 
-// Components of the positions in `members` (a 27-bit mask) under `links`; with `mustTouch`,
-// only those containing one of its positions are counted.
-int countComponents(std::uint32_t members, const std::array<std::vector<int>, 27>& links, std::uint32_t mustTouch) {
+constexpr std::array<int, 3> kAxisStride = {1, 3, 9};
+
+// The positions in `m` and their neighbours one step along `axis`, either way.
+constexpr std::uint32_t stepAlong(std::uint32_t m, int axis) {
+    const int stride = kAxisStride[std::size_t(axis)];
+    return m | ((m & ~positionsWhere(axis, 2)) << stride) | ((m & ~positionsWhere(axis, 0)) >> stride);
+}
+
+// Face (6-) neighbours: one step along a single axis.
+constexpr std::uint32_t faceDilation(std::uint32_t m) {
+    return (stepAlong(m, 0) | stepAlong(m, 1) | stepAlong(m, 2)) & kAllPositions;
+}
+
+// 26-neighbours: a step along each axis in turn (the 3x3x3 cube is their product).
+constexpr std::uint32_t cubeDilation(std::uint32_t m) { return stepAlong(stepAlong(stepAlong(m, 0), 1), 2) & kAllPositions; }
+
+constexpr std::uint32_t positionsWithinTwoFaceSteps() {
+    std::uint32_t mask = 0;
+    for (int p = 0; p < 27; ++p) {
+        const int l1 = std::abs(p % 3 - 1) + std::abs(p / 3 % 3 - 1) + std::abs(p / 9 - 1);
+        if (l1 >= 1 && l1 <= 2) mask |= 1u << p;
+    }
+    return mask;
+}
+constexpr std::uint32_t kCentreBit = 1u << kCentre;
+constexpr std::uint32_t kEighteenNeighbours = positionsWithinTwoFaceSteps();
+constexpr std::uint32_t kFaceNeighbours = faceDilation(kCentreBit) & ~kCentreBit;
+
+// Components of `members` (a mask of positions, centre excluded) under `dilate`; with
+// `mustTouch`, only those containing one of its positions are counted. Stops counting past 2.
+template <std::uint32_t (*dilate)(std::uint32_t)>
+int countComponents(std::uint32_t members, std::uint32_t mustTouch) {
     int count = 0;
-    std::array<int, 27> stack{};
-    while (members) {
-        const int start = __builtin_ctz(members);
-        members &= ~(1u << start);
-        bool touches = (mustTouch >> start) & 1u;
-        int top = 0;
-        stack[top++] = start;
-        while (top) {
-            const int p = stack[--top];
-            for (int q : links[p]) {
-                if ((members >> q) & 1u) {
-                    members &= ~(1u << q);
-                    touches = touches || ((mustTouch >> q) & 1u);
-                    stack[top++] = q;
-                }
-            }
+    while (members && count < 2) {
+        std::uint32_t component = members & (~members + 1), grown = 0;
+        while (grown != component) {
+            grown = component;
+            component = dilate(component) & members;
         }
-        count += touches;
+        members &= ~component;
+        count += (component & mustTouch) != 0;
     }
     return count;
 }
 
-// A simple point of a (6, 26) region: one 6-component of the inside around it that it
-// touches by a face, one 26-component of the outside around it.
+// A simple point of a (6, 26) region: one 6-component of the inside around it (within its
+// 18-neighbourhood) that it touches by a face, one 26-component of the outside around it.
 bool isSimple(std::uint32_t inside) {
-    const Neighbourhood& h = neighbourhood();
-    std::uint32_t inside18 = 0, outside26 = 0, faceNeighbours = 0;
-    for (int p = 0; p < 27; ++p) {
-        if (p == kCentre) continue;
-        const bool in = (inside >> p) & 1u;
-        if (in && h.in18[p]) inside18 |= 1u << p;
-        if (!in) outside26 |= 1u << p;
-        if (h.faceNeighbour[p]) faceNeighbours |= 1u << p;
-    }
-    return countComponents(inside18, h.faceAdjacent, faceNeighbours) == 1 &&
-           countComponents(outside26, h.adjacent, ~0u) == 1;
+    const std::uint32_t inside18 = inside & kEighteenNeighbours;
+    const std::uint32_t outside26 = ~inside & kAllPositions & ~kCentreBit;
+    return countComponents<faceDilation>(inside18, kFaceNeighbours) == 1 &&
+           countComponents<cubeDilation>(outside26, kAllPositions) == 1;
 }
+
+// Offsets of the 27 positions, (dx, dy, dz) each in -1..1.
+constexpr std::array<int, 3> offsetOf(int p) { return {p % 3 - 1, p / 3 % 3 - 1, p / 9 - 1}; }
 
 class Region {
 public:
     explicit Region(const FieldGrid& grid) : grid_(grid), member_(grid.size(), 0) {
-        const Neighbourhood& h = neighbourhood();
-        for (int p = 0; p < 27; ++p)
-            stride_[p] = h.offset[p][0] + std::ptrdiff_t(grid.nodes[0]) * (h.offset[p][1] + std::ptrdiff_t(grid.nodes[1]) * h.offset[p][2]);
+        for (int p = 0; p < 27; ++p) {
+            const std::array<int, 3> d = offsetOf(p);
+            stride_[p] = d[0] + std::ptrdiff_t(grid.nodes[0]) * (d[1] + std::ptrdiff_t(grid.nodes[1]) * d[2]);
+        }
     }
     bool contains(std::size_t n) const { return member_[n] != 0; }
     void add(std::size_t n) { member_[n] = 1; }
@@ -202,16 +195,23 @@ std::vector<std::size_t> drawSkeleton(const FieldGrid& grid, const SkeletonGraph
 void grow(Region& region, const std::vector<double>& values, const std::vector<std::size_t>& seeds) {
     using Entry = std::pair<double, std::size_t>;
     std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> candidates;
+    // A node waits in the queue once: a second entry, with the same key, would be taken
+    // right after the first, with nothing changed in between.
+    std::vector<std::uint8_t> waiting(values.size(), 0);
     const auto offerNeighbours = [&](std::size_t n) {
         for (int p = 0; p < 27; ++p) {
             const std::size_t m = region.neighbour(n, p);
-            if (p != kCentre && values[m] < 0 && !region.contains(m) && region.interior(m)) candidates.push({values[m], m});
+            if (p != kCentre && values[m] < 0 && !waiting[m] && !region.contains(m) && region.interior(m)) {
+                waiting[m] = 1;
+                candidates.push({values[m], m});
+            }
         }
     };
     for (std::size_t s : seeds) offerNeighbours(s);
     while (!candidates.empty()) {
         const std::size_t n = candidates.top().second;
         candidates.pop();
+        waiting[n] = 0;
         if (region.contains(n) || !isSimple(region.insideMask(n))) continue;
         region.add(n);
         offerNeighbours(n);
