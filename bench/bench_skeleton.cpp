@@ -1,7 +1,10 @@
 // Benchmark of the whole pipeline as a user runs it: reading a binary PLY file, then the
 // skeleton (multi-resolution subsample, 1-rings, contraction, thinning, embedding,
-// finishing), with time per stage, the skeleton's topology and peak memory after reading
-// and at the end, for sampled tori of growing size (the right answer is always one cycle).
+// finishing), with time per stage, the skeleton's topology and peak memory per stage, for
+// sampled tori of growing size (the right answer is always one cycle). A stage's peak is
+// the resident set's high-water mark over the stage alone: it is reset (Linux's
+// /proc/self/clear_refs) as each stage starts, the stages told apart by their progress
+// messages.
 // The clouds are generated at run time into a temporary folder (10M points: 240 MB) and
 // deleted afterwards. One child process per step, so each peak is the case's own.
 //
@@ -13,6 +16,7 @@
 #include <pcskeleton/io/point_cloud_io.h>
 #include "support/sampled_shapes.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
@@ -25,10 +29,13 @@ using namespace pcskeleton;
 
 namespace {
 
+enum Stage { Reading, Subsampling, Neighbourhoods, Contraction, ThinningAndFinishing, kStages };
+constexpr const char* kStageNames[kStages] = {"read", "subsample", "1-rings", "contract", "thin+finish"};
+
 struct Row {
     double reading = 0, total = 0;
     StageSeconds seconds;
-    double peakAfterReadingMegabytes = 0;
+    double stagePeakMegabytes[kStages] = {};
     std::size_t contracted = 0;
     int iterations = 0, nodes = 0, cycles = 0;
     bool everyPointHasNode = false;
@@ -43,6 +50,39 @@ double peakResidentMegabytes() {
     return 0;
 }
 
+// Starts a new high-water mark at the current resident set; false where the kernel cannot.
+bool resetPeakResident() {
+    std::ofstream clear("/proc/self/clear_refs");
+    return bool(clear << "5" << std::flush);
+}
+
+// The stage a progress message belongs to, by the pipeline's wording.
+Stage stageOf(const char* what) {
+    const std::string message = what;
+    if (message.rfind("Multi-resolution", 0) == 0) return Subsampling;
+    if (message.rfind("Neighbourhoods", 0) == 0 || message.rfind("Denois", 0) == 0) return Neighbourhoods;
+    if (message.rfind("Contracting", 0) == 0) return Contraction;
+    return ThinningAndFinishing;
+}
+
+// The peak of each stage, from progress messages: a stage ends when the next one's first
+// message arrives.
+class StagePeaks {
+public:
+    explicit StagePeaks(double* peaks) : peaks_(peaks) {}
+    void enter(Stage stage) {
+        if (stage == current_) return;
+        peaks_[current_] = std::max(peaks_[current_], peakResidentMegabytes());
+        resetPeakResident();
+        current_ = stage;
+    }
+    void finish() { peaks_[current_] = std::max(peaks_[current_], peakResidentMegabytes()); }
+
+private:
+    double* peaks_;
+    Stage current_ = Reading;
+};
+
 double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -52,8 +92,10 @@ Row runCase(const std::string& file, const SkeletonParameters& parameters) {
     const auto start = std::chrono::steady_clock::now();
     const PointList cloud = readPointCloud(file);
     row.reading = secondsSince(start);
-    row.peakAfterReadingMegabytes = peakResidentMegabytes();
-    const SkeletonResult result = computeCurveSkeleton(cloud, parameters);
+    StagePeaks peaks(row.stagePeakMegabytes);
+    const SkeletonResult result =
+        computeCurveSkeleton(cloud, parameters, [&](int, const char* what) { peaks.enter(stageOf(what)); });
+    peaks.finish();
     row.total = secondsSince(start);
     row.seconds = result.seconds;
     row.contracted = result.quality.points;
@@ -81,12 +123,14 @@ int main(int argc, char** argv) {
     std::filesystem::create_directories(folder);
 
     std::printf("Curve skeleton of a sampled torus read from a binary PLY file (1 cycle expected), %s, %ld cores.\n"
-                "Peak memory: resident set after reading the file, and at the end.\n",
+                "Peak memory (MB): the resident set's highest during each stage; 'peak' is the whole run's.\n",
                 parameters.resolution.maxContractedPoints == 0 ? "full resolution" : "default pipeline",
                 sysconf(_SC_NPROCESSORS_ONLN));
-    std::printf("%9s %8s %7s %7s %8s %8s %6s %6s %5s %8s %6s %6s %10s %9s\n", "points", "contracted", "read",
-                "subsample", "1-rings", "contract", "thin", "finish", "iters", "total", "nodes", "cycles",
-                "peak read", "peak");
+    std::printf("%9s %8s %7s %7s %8s %8s %6s %6s %5s %8s %6s %6s", "points", "contracted", "read", "subsample",
+                "1-rings", "contract", "thin", "finish", "iters", "total", "nodes", "cycles");
+    for (const char* stage : kStageNames) std::printf(" %11s", stage);
+    std::printf(" %7s\n", "peak");
+    if (!resetPeakResident()) std::printf("(this kernel cannot reset the high-water mark: each stage's peak includes the earlier ones')\n");
     for (std::size_t n : sizes) {
         const std::string file = (folder / ("torus" + std::to_string(n) + ".ply")).string();
         int written = 0;
@@ -103,11 +147,13 @@ int main(int argc, char** argv) {
             std::printf("%9zu  failed\n", n);
         } else {
             const StageSeconds& s = row.seconds;
-            std::printf("%9zu %10zu %6.2fs %8.2fs %7.2fs %7.2fs %5.2fs %5.2fs %5d %7.2fs %6d %6d %7.0f MB %6.0f MB%s\n", n,
-                        row.contracted, row.reading, s.subsampling, s.neighbourhoods, s.contraction,
-                        s.thinning + s.embedding, s.finishing, row.iterations, row.total, row.nodes, row.cycles,
-                        row.peakAfterReadingMegabytes, peakMegabytes,
-                        row.everyPointHasNode ? "" : "  (some points without a node)");
+            std::printf("%9zu %10zu %6.2fs %8.2fs %7.2fs %7.2fs %5.2fs %5.2fs %5d %7.2fs %6d %6d", n, row.contracted,
+                        row.reading, s.subsampling, s.neighbourhoods, s.contraction, s.thinning + s.embedding,
+                        s.finishing, row.iterations, row.total, row.nodes, row.cycles);
+            // The child's own maximum would miss the stages before the last reset.
+            double wholeRun = 0;
+            for (double peak : row.stagePeakMegabytes) std::printf(" %11.0f", peak), wholeRun = std::max(wholeRun, peak);
+            std::printf(" %7.0f%s\n", std::max(wholeRun, peakMegabytes), row.everyPointHasNode ? "" : "  (some points without a node)");
         }
         std::filesystem::remove(file);
     }
