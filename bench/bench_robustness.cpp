@@ -36,20 +36,14 @@
 //        bench_robustness --write SHAPE CONDITION FILE [POINTS]
 //                                       writes one case's cloud (.xyz or .ply), e.g. for
 //                                       the README's pictures
+#include "robustness_suite.h"
 #include "run_in_child.h"
 
 #include <pcskeleton/curve_skeleton.h>
-#include "support/sampled_shapes.h"
 #include <pcskeleton/io/point_cloud_io.h>
-#include "support/scan_simulation.h"
 #include <pcskeleton/analysis/tip_extension.h>
 #include <pcskeleton/core/outlier_detection.h>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/distance.h>
-#include <CGAL/Polygon_mesh_processing/measure.h>
-#include <CGAL/Side_of_triangle_mesh.h>
-#include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
 #include <array>
@@ -65,241 +59,10 @@
 #include <vector>
 
 using namespace pcskeleton;
+using namespace pcskeleton::bench;
 
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
-
-constexpr int kUnknown = -1;
-
-// A shape to skeletonise: how to sample it, and what is known about its skeleton.
-struct Subject {
-    std::string name;
-    int cycles = kUnknown, tips = kUnknown;
-    int components = 1;
-    double area = 0.0;
-    std::function<PointList(std::size_t n, std::uint32_t seed)> sample;
-    std::function<bool(const Point&)> inside;             // empty: not known
-    std::function<double(const Point&)> centreDistance;   // empty: no known centre curve
-    PointList ends;                                       // where the shape ends, tip by tip
-};
-
-struct Tube {
-    shapes::Polyline curve;
-    double radius;
-};
-
-bool insideTube(const Tube& tube, const Point& p) { return shapes::distanceToCurve(p, tube.curve) < tube.radius; }
-
-// Ends of a tube's curve (segment ends used once) that are not inside another tube, pushed
-// out by the radius: the points where the shape ends.
-PointList tubeEnds(const std::vector<Tube>& tubes) {
-    PointList ends;
-    for (std::size_t t = 0; t < tubes.size(); ++t) {
-        std::map<std::array<long long, 3>, int> uses;
-        // Rounded, so that the ends of segments meeting at a point computed twice match.
-        auto key = [](const Point& p) {
-            return std::array<long long, 3>{std::llround(p.x() * 1e9), std::llround(p.y() * 1e9), std::llround(p.z() * 1e9)};
-        };
-        for (const shapes::Segment& s : tubes[t].curve) ++uses[key(s.a)], ++uses[key(s.b)];
-        for (const shapes::Segment& s : tubes[t].curve) {
-            for (const auto& [end, other] : {std::pair{s.a, s.b}, std::pair{s.b, s.a}}) {
-                if (uses[key(end)] != 1) continue;
-                bool covered = false;
-                for (std::size_t u = 0; u < tubes.size(); ++u) covered |= u != t && insideTube(tubes[u], end);
-                if (!covered) ends.push_back(end + tubes[t].radius * (end - other).normalized());
-            }
-        }
-    }
-    return ends;
-}
-
-Subject tubeSubject(const std::string& name, const std::vector<Tube>& tubes, int cycles, int tips, int components = 1) {
-    Subject s;
-    s.name = name;
-    s.components = components;
-    s.cycles = cycles;
-    s.tips = tips;
-    for (const Tube& t : tubes) {
-        for (const shapes::Segment& segment : t.curve) s.area += 2.0 * M_PI * t.radius * (segment.b - segment.a).norm();
-    }
-    s.sample = [tubes, area = s.area](std::size_t n, std::uint32_t seed) {
-        PointList points;
-        for (std::size_t t = 0; t < tubes.size(); ++t) {
-            double length = 0.0;
-            for (const shapes::Segment& segment : tubes[t].curve) length += (segment.b - segment.a).norm();
-            const auto count = std::size_t(n * 2.0 * M_PI * tubes[t].radius * length / area);
-            for (const Point& p : shapes::tube(tubes[t].curve, tubes[t].radius, count, seed + 17 * t)) {
-                bool covered = false;
-                for (std::size_t u = 0; u < tubes.size(); ++u) covered |= u != t && insideTube(tubes[u], p);
-                if (!covered) points.push_back(p);
-            }
-        }
-        return points;
-    };
-    s.inside = [tubes](const Point& p) {
-        for (const Tube& t : tubes) {
-            if (insideTube(t, p)) return true;
-        }
-        return false;
-    };
-    s.centreDistance = [tubes](const Point& p) {
-        double d = std::numeric_limits<double>::infinity();
-        for (const Tube& t : tubes) d = std::min(d, shapes::distanceToCurve(p, t.curve));
-        return d;
-    };
-    s.ends = tubeEnds(tubes);
-    return s;
-}
-
-std::vector<Subject> knownShapes() {
-    using shapes::Polyline;
-    std::vector<Subject> subjects;
-    subjects.push_back(tubeSubject("straight tube", {{Polyline{{Point(0, 0, 0), Point(0, 0, 1.6)}}, 0.1}}, 0, 2));
-    Polyline y;
-    for (int arm = 0; arm < 3; ++arm) {
-        const double a = 2.0 * M_PI * arm / 3.0;
-        y.push_back({Point(0, 0, 0), Point(0.8 * std::cos(a), 0.8 * std::sin(a), 0)});
-    }
-    subjects.push_back(tubeSubject("Y branch", {{y, 0.08}}, 0, 3));
-    const Point fork(0, 0, 0.8), left(-0.4, 0, 1.3), right(0.4, 0, 1.3);
-    const Polyline tree{{Point(0, 0, 0), fork},       {fork, left},
-                        {fork, right},                {left, Point(-0.55, 0.25, 1.75)},
-                        {left, Point(-0.65, -0.2, 1.65)}, {right, Point(0.55, 0.25, 1.75)},
-                        {right, Point(0.65, -0.2, 1.65)}};
-    subjects.push_back(tubeSubject("tree", {{tree, 0.06}}, 0, 5));
-    subjects.push_back(tubeSubject("ring", {{shapes::circle(Point::Zero(), 0.8), 0.15}}, 1, 0));
-    Polyline eight = shapes::circle(Point(-0.7, 0, 0), 0.6);
-    const Polyline rightLoop = shapes::circle(Point(0.7, 0, 0), 0.6);
-    eight.insert(eight.end(), rightLoop.begin(), rightLoop.end());
-    eight.push_back({Point(-0.1, 0, 0), Point(0.1, 0, 0)});
-    subjects.push_back(tubeSubject("genus 2 (figure eight)", {{eight, 0.18}}, 2, 0));
-    std::vector<Tube> animal{{{{Point(-0.8, 0, 0), Point(0.8, 0, 0)}}, 0.3}};
-    for (double x : {-0.5, 0.5}) {
-        for (double side : {-0.15, 0.15}) animal.push_back({{{Point(x, side, 0), Point(x, side, -1.0)}}, 0.045});
-    }
-    subjects.push_back(tubeSubject("thin legs, thick body", animal, 0, 6));
-    // Two parallel tubes (axes 0.28 apart, radius 0.08) whose surfaces are 0.12 apart, about
-    // 3.6 node spacings: two parts.
-    subjects.push_back(tubeSubject("two close tubes",
-                                   {{{{Point(-0.14, 0, 0), Point(-0.14, 0, 1.6)}}, 0.08},
-                                    {{{Point(0.14, 0, 0), Point(0.14, 0, 1.6)}}, 0.08}},
-                                   0, 4, 2));
-    // Three rings in a row, each joined to the next by a short bar: genus 3.
-    Polyline three;
-    for (double x : {-1.3, 0.0, 1.3}) {
-        const Polyline ring = shapes::circle(Point(x, 0, 0), 0.5);
-        three.insert(three.end(), ring.begin(), ring.end());
-    }
-    three.push_back({Point(-0.8, 0, 0), Point(-0.5, 0, 0)});
-    three.push_back({Point(0.5, 0, 0), Point(0.8, 0, 0)});
-    subjects.push_back(tubeSubject("genus 3 (three rings)", {{three, 0.12}}, 3, 0));
-    return subjects;
-}
-
-// A closed mesh from libcgal-demo, sampled uniformly on its faces by CGAL.
-bool addModel(std::vector<Subject>& subjects, const std::filesystem::path& folder, const std::string& name, int cycles,
-              int tips) {
-    auto mesh = std::make_shared<Mesh>();
-    if (!CGAL::IO::read_polygon_mesh((folder / (name + ".off")).string(), *mesh) || !CGAL::is_triangle_mesh(*mesh)) {
-        return false;
-    }
-    Subject s;
-    s.name = name + " (libcgal-demo)";
-    s.cycles = cycles;
-    s.tips = tips;
-    s.area = CGAL::to_double(CGAL::Polygon_mesh_processing::area(*mesh));
-    // Uniform on the faces, with our own seeded generator: CGAL's sample_triangle_mesh gave
-    // different samples from run to run (its random_seed did not make it reproducible).
-    auto triangles = std::make_shared<std::vector<std::array<Point, 3>>>();
-    for (const auto f : mesh->faces()) {
-        std::array<Point, 3> t;
-        int c = 0;
-        for (const auto v : CGAL::vertices_around_face(mesh->halfedge(f), *mesh)) {
-            const Kernel::Point_3& p = mesh->point(v);
-            t[c++] = Point(p.x(), p.y(), p.z());
-        }
-        triangles->push_back(t);
-    }
-    s.sample = [triangles](std::size_t n, std::uint32_t seed) {
-        std::vector<double> cumulative;
-        double total = 0.0;
-        for (const auto& t : *triangles) cumulative.push_back(total += 0.5 * (t[1] - t[0]).cross(t[2] - t[0]).norm());
-        std::mt19937 random(seed);
-        std::uniform_real_distribution<double> unit(0.0, 1.0);
-        PointList points;
-        for (std::size_t i = 0; i < n; ++i) {
-            const auto& t = (*triangles)[std::size_t(
-                std::lower_bound(cumulative.begin(), cumulative.end(), unit(random) * total) - cumulative.begin())];
-            const double a = std::sqrt(unit(random)), b = unit(random);
-            points.push_back((1 - a) * t[0] + a * (1 - b) * t[1] + a * b * t[2]);
-        }
-        return points;
-    };
-    if (CGAL::is_closed(*mesh)) {
-        auto side = std::make_shared<CGAL::Side_of_triangle_mesh<Mesh, Kernel>>(*mesh);
-        s.inside = [mesh, side](const Point& p) {
-            return (*side)(Kernel::Point_3(p.x(), p.y(), p.z())) != CGAL::ON_UNBOUNDED_SIDE;
-        };
-    }
-    subjects.push_back(std::move(s));
-    return true;
-}
-
-std::filesystem::path extractModels(const std::vector<std::string>& names) {
-    const std::filesystem::path folder = std::filesystem::temp_directory_path() / "pcskeleton_bench_models";
-    std::string command = "mkdir -p '" + folder.string() + "' && tar -xzf /usr/share/doc/libcgal-demo/data.tar.gz -C '" +
-                          folder.string() + "' --strip-components=2";
-    for (const std::string& name : names) command += " data/meshes/" + name + ".off";
-    if (std::system((command + " 2>/dev/null").c_str()) != 0) return {};
-    return folder;
-}
-
-struct Condition {
-    const char* name;
-    std::function<PointList(const Subject&, std::size_t n, std::uint32_t seed)> make;
-};
-
-// Pixel of a virtual scanner: three sample spacings of a uniform sample of `n` points, so
-// that no pixel of a front surface is empty (which would let the back show through).
-double scanPixel(const Subject& s, std::size_t n) { return 3.0 * std::sqrt(s.area / double(n)); }
-
-std::vector<Condition> conditions() {
-    using namespace shapes;
-    auto noisy = [](double share) {
-        return [share](const Subject& s, std::size_t n, std::uint32_t seed) { return withNoise(s.sample(n, seed), share, seed); };
-    };
-    auto outliers = [](double share) {
-        return [share](const Subject& s, std::size_t n, std::uint32_t seed) {
-            return withOutliers(s.sample(n, seed), share, seed);
-        };
-    };
-    auto misaligned = [](double share) {
-        return [share](const Subject& s, std::size_t n, std::uint32_t seed) {
-            return misalignedScans(s.sample(n, seed), 5, scanPixel(s, n), share, seed);
-        };
-    };
-    return {
-        {"clean", [](const Subject& s, std::size_t n, std::uint32_t seed) { return s.sample(n, seed); }},
-        {"noise 0.5%", noisy(0.005)},
-        {"noise 1%", noisy(0.01)},
-        {"noise 2%", noisy(0.02)},
-        {"outliers 1%", outliers(0.01)},
-        {"outliers 5%", outliers(0.05)},
-        {"half in 10%", [](const Subject& s, std::size_t n, std::uint32_t seed) {
-             return unevenlyDense(s.sample(5 * n, seed), n, 0.1, seed);
-         }},
-        {"scan 1 view", [](const Subject& s, std::size_t n, std::uint32_t seed) {
-             return virtualScans(s.sample(2 * n, seed), 1, scanPixel(s, 2 * n));
-         }},
-        {"scan 4 views", [](const Subject& s, std::size_t n, std::uint32_t seed) {
-             return virtualScans(s.sample(n, seed), 4, scanPixel(s, n));
-         }},
-        {"misaligned 0.5%", misaligned(0.005)},
-        {"misaligned 1%", misaligned(0.01)},
-    };
-}
 
 struct Row {
     int points = 0, cycles = 0, tips = 0, components = 0, warnings = 0;
@@ -499,21 +262,7 @@ int main(int argc, char** argv) {
     if (contractedPoints != args.end() && contractedPoints + 1 != args.end()) {
         pipeline.resolution.maxContractedPoints = std::strtoull((contractedPoints + 1)->c_str(), nullptr, 10);
     }
-    std::vector<Subject> subjects = knownShapes();
-    const std::vector<std::string> models{"elephant", "knot1", "eight", "hand"};
-    const std::filesystem::path folder = extractModels(models);
-    // hand.off is a fist: four fingers curled onto the palm and each other, one closed
-    // genus-0 surface from which only the thumb and the wrist stand out. Its tips are not a
-    // known answer (this table expected 6, five fingers and the wrist, until 2026-11-30;
-    // the shape has no free fingers to give them), as the elephant's are not.
-    const std::map<std::string, std::pair<int, int>> modelTopology{
-        {"elephant", {0, kUnknown}}, {"knot1", {1, 0}}, {"eight", {2, 0}}, {"hand", {0, kUnknown}}};
-    for (const std::string& model : models) {
-        const auto [cycles, tips] = modelTopology.at(model);
-        if (folder.empty() || !addModel(subjects, folder, model, cycles, tips)) {
-            std::printf("(%s skipped: install libcgal-demo)\n", model.c_str());
-        }
-    }
+    const std::vector<Subject> subjects = robustnessSubjects();
 
     if (write) return writeCase(subjects, args[1], args[2], args[3], n);
     if (outliers) {
