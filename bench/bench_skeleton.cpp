@@ -152,7 +152,11 @@ int main(int argc, char** argv) {
                         s.finishing, row.iterations, row.total, row.nodes, row.cycles);
             // The child's own maximum would miss the stages before the last reset.
             double wholeRun = 0;
-            for (double peak : row.stagePeakMegabytes) std::printf(" %11.0f", peak), wholeRun = std::max(wholeRun, peak);
+            for (double peak : row.stagePeakMegabytes) {
+                if (peak > 0) std::printf(" %11.0f", peak);
+                else std::printf(" %11s", "-");  // the stage did not run (no subsample below the threshold)
+                wholeRun = std::max(wholeRun, peak);
+            }
             std::printf(" %7.0f%s\n", std::max(wholeRun, peakMegabytes), row.everyPointHasNode ? "" : "  (some points without a node)");
         }
         std::filesystem::remove(file);
