@@ -3,6 +3,7 @@
 #include "pcskeleton/internal/machine_memory.h"
 #include "pcskeleton/internal/stopwatch.h"
 #include "pcskeleton/reconstruction/field_fitting.h"
+#include "pcskeleton/reconstruction/point_weights.h"
 #include "pcskeleton/reconstruction/topology_control.h"
 #include "pcskeleton/skeleton/skeleton_distance.h"
 
@@ -261,7 +262,14 @@ Reconstruction reconstructFromSkeleton(const PointList& points, const SkeletonGr
     problem.grid = grid;
     problem.smoothnessWeight = parameters.smoothWeight;
     problem.pointConstraints.reserve(points.size());
-    for (const Point& p : framePoints) problem.pointConstraints.push_back({p, 0.0, parameters.surfaceWeight});
+    if (parameters.adaptToNoise) {
+        const SurfacePointWeights weights = noiseAdaptedWeights(framePoints, grid.spacing, parameters.surfaceWeight);
+        for (std::size_t i = 0; i < framePoints.size(); ++i)
+            problem.pointConstraints.push_back({framePoints[i], 0.0, weights.weight[i]});
+        summary.surfaceWeightShare = weights.meanShare;
+    } else {
+        for (const Point& p : framePoints) problem.pointConstraints.push_back({p, 0.0, parameters.surfaceWeight});
+    }
     summary.surfaceSamples = points.size();
     if (parameters.skeletonWeight > 0) addSkeletonSamples(frameSkeleton, parameters.skeletonWeight, problem.pointConstraints);
     summary.skeletonSamples = problem.pointConstraints.size() - points.size();
@@ -359,7 +367,8 @@ std::string describeFindings(const ReconstructionReport& r) {
     text.precision(3);
     text << "grid " << r.gridNodes[0] << " x " << r.gridNodes[1] << " x " << r.gridNodes[2] << " nodes (" << r.unknowns
          << " unknowns, cell " << r.cellSize << "), " << r.levels << " multigrid levels\n"
-         << "constraints: " << r.surfaceSamples << " surface samples, " << r.skeletonSamples << " skeleton samples, "
+         << "constraints: " << r.surfaceSamples << " surface samples (mean weight " << std::setprecision(0)
+         << std::fixed << 100.0 * r.surfaceWeightShare << "% of w2), " << r.skeletonSamples << " skeleton samples, "
          << r.outsideNodes << " outside nodes\n"
          << "solver: " << r.iterations << " iterations, relative residual " << std::scientific << r.relativeResidual
          << std::fixed << std::setprecision(2) << (r.converged ? "" : " (not converged)") << "\n"

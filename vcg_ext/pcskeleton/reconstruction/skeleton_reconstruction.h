@@ -37,6 +37,13 @@ struct ReconstructionParameters {
     // islands the skeleton does not have are cut away. false: the paper's plain fit, whose
     // zero level set may have any topology the data suggests.
     bool keepSkeletonTopology = true;
+    // Points whose neighbours scatter across the surface by more than a grid cell weigh
+    // less in the surface term (point_weights.h): noise then makes no bumps. false: every
+    // point weighs w2, the paper's. On by bench_surface (--uniform-point-weights against
+    // the default): with 2% noise the surface's mean distance to the true surface falls
+    // from 1.68% to 1.13% of the diagonal, with 1% from 0.43% to 0.40%; clean, scanned
+    // and misaligned cases and every topology are unchanged.
+    bool adaptToNoise = true;
 };
 
 constexpr int kMinimumResolution = 16;
@@ -63,6 +70,7 @@ struct ReconstructionReport {
     std::size_t unknowns = 0;
     double cellSize = 0;  // input units
     std::size_t surfaceSamples = 0, skeletonSamples = 0, outsideNodes = 0;
+    double surfaceWeightShare = 1.0;  // the surface samples' mean weight, as a share of w2
     int levels = 0, iterations = 0;
     double relativeResidual = 0;
     bool converged = false;
