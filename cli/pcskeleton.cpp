@@ -130,6 +130,9 @@ void printHelp() {
         "  --data-topology       the paper's plain fit: the surface may have handles and\n"
         "                        parts the skeleton has not (by default they are cut away\n"
         "                        and the surface has exactly the skeleton's topology)\n"
+        "  --uniform-point-weights  every point weighs w2 (the paper); by default points\n"
+        "                        whose neighbours scatter across the surface by more than\n"
+        "                        a grid cell (noise) weigh less, so noise makes no bumps\n"
         "\n"
         "After the run a quality report goes to stderr: cycles, tips, junctions, parts,\n"
         "whether contraction converged, and warnings (points that did not contract, parts\n"
@@ -207,7 +210,7 @@ void printHelp() {
         "  --paper               the paper's pipeline exactly: the same as --keep-outliers\n"
         "                        --denoise 0 --no-recentre --no-refine --no-extend-tips\n"
         "                        --link-limit 0 --gap-limit 0 --full-resolution (and\n"
-        "                        --data-topology)\n"
+        "                        --data-topology --uniform-point-weights)\n"
         "  --report FILE         also write the quality report to FILE\n"
         "  --force               replace output files that exist already (never the input)\n"
         "  --quiet               no progress and no summary on stderr\n"
@@ -348,9 +351,12 @@ bool parseArguments(int argc, char** argv, Options& options) {
             c.outliers.detect = false;
         } else if (arg == "--data-topology") {
             options.reconstruction.keepSkeletonTopology = false;
+        } else if (arg == "--uniform-point-weights") {
+            options.reconstruction.adaptToNoise = false;
         } else if (arg == "--paper") {
             options.parameters.keepToThePaper();
             options.reconstruction.keepSkeletonTopology = false;
+            options.reconstruction.adaptToNoise = false;
         } else if (auto option = withValue.find(arg); option != withValue.end()) {
             if (i + 1 >= argc) throw UsageError(arg + " needs a value");
             option->second(argv[++i]);

@@ -191,6 +191,10 @@ void addReconstructionParameters(RichParameterList& list) {
         "loop. Handles, bridges and islands that the points suggest but the skeleton does not have (noise, "
         "close parts touching) are cut away, and the log says where the largest cut was. Untick for the paper's "
         "plain fit, whose surface may have any topology the points suggest."));
+    list.addParam(RichBool("adaptToNoise", d.adaptToNoise, "Weigh noisy points less",
+        "Points whose neighbours scatter across the surface by more than a grid cell (scan noise) weigh less in "
+        "the fit, so the surface passes through their middle instead of following each bump. Clean parts are "
+        "not changed. Untick for the paper's fit, where every point weighs the surface weight w2."));
 }
 
 pcskeleton::ReconstructionParameters readReconstructionParameters(const RichParameterList& list) {
@@ -202,6 +206,7 @@ pcskeleton::ReconstructionParameters readReconstructionParameters(const RichPara
     p.outsideWeight = list.getFloat("outsideWeight");
     p.outsideRadii = list.getFloat("outsideRadii");
     p.keepSkeletonTopology = list.getBool("keepSkeletonTopology");
+    p.adaptToNoise = list.getBool("adaptToNoise");
     return p;
 }
 
