@@ -1,5 +1,7 @@
 #include "pcskeleton/reconstruction/topology_control.h"
 
+#include "pcskeleton/internal/disjoint_sets.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -66,11 +68,11 @@ constexpr std::uint32_t kEighteenNeighbours = positionsWithinTwoFaceSteps();
 constexpr std::uint32_t kFaceNeighbours = faceDilation(kCentreBit) & ~kCentreBit;
 
 // Components of `members` (a mask of positions, centre excluded) under `dilate`; with
-// `mustTouch`, only those containing one of its positions are counted. Stops counting past 2.
+// `mustTouch`, only those containing one of its positions are counted. Stops counting at 3.
 template <std::uint32_t (*dilate)(std::uint32_t)>
 int countComponents(std::uint32_t members, std::uint32_t mustTouch) {
     int count = 0;
-    while (members && count < 2) {
+    while (members && count < 3) {
         std::uint32_t component = members & (~members + 1), grown = 0;
         while (grown != component) {
             grown = component;
@@ -82,13 +84,29 @@ int countComponents(std::uint32_t members, std::uint32_t mustTouch) {
     return count;
 }
 
-// A simple point of a (6, 26) region: one 6-component of the inside around it (within its
-// 18-neighbourhood) that it touches by a face, one 26-component of the outside around it.
-bool isSimple(std::uint32_t inside) {
+// Around a node of a (6, 26) region: the 6-components of the inside (within its
+// 18-neighbourhood) that it touches by a face, and the 26-components of the outside.
+struct LocalComponents {
+    int inside, outside;
+};
+
+LocalComponents localComponents(std::uint32_t inside) {
     const std::uint32_t inside18 = inside & kEighteenNeighbours;
     const std::uint32_t outside26 = ~inside & kAllPositions & ~kCentreBit;
-    return countComponents<faceDilation>(inside18, kFaceNeighbours) == 1 &&
-           countComponents<cubeDilation>(outside26, kAllPositions) == 1;
+    return {countComponents<faceDilation>(inside18, kFaceNeighbours), countComponents<cubeDilation>(outside26, kAllPositions)};
+}
+
+// A simple point: adding or removing it changes no component, tunnel or cavity.
+bool isSimple(std::uint32_t inside) {
+    const LocalComponents c = localComponents(inside);
+    return c.inside == 1 && c.outside == 1;
+}
+
+// Adding it joins two pieces of the inside that meet nowhere else nearby, and splits no
+// outside: within one part of the region, it closes exactly one loop.
+bool closesOneLoop(std::uint32_t inside) {
+    const LocalComponents c = localComponents(inside);
+    return c.inside == 2 && c.outside == 1;
 }
 
 // Offsets of the 27 positions, (dx, dy, dz) each in -1..1.
@@ -123,26 +141,36 @@ private:
 };
 
 // The skeleton drawn into the region as 6-connected chains of grid nodes, with its own
-// topology: the bones of a spanning forest are drawn node by node taking simple points
-// only (a chain that zig-zags within a cell or passes a cell from another bone must not
-// close a loop the skeleton has not), then each remaining bone, which closes one of the
-// skeleton's cycles, is drawn whole. Kept off the grid's boundary.
-std::vector<std::size_t> drawSkeleton(const FieldGrid& grid, const SkeletonGraph& skeleton, Region& region) {
-    std::vector<std::size_t> seeds;
+// topology. The bones of a spanning forest are drawn node by node taking simple points
+// only: a chain that zig-zags within a cell or passes a cell from another bone must not
+// close a loop the skeleton has not. A chain blocked on the way (its next cell would join
+// another chain, where two bones pass close) leaves its end for another bone to reach;
+// otherwise everything beyond it, and the cycles through it, would be lost. Each remaining
+// bone closes one of the skeleton's cycles: it is drawn by simple points too, plus the one
+// cell where it meets the region again and closes its loop; cells that would close more
+// are left out. Kept off the grid's boundary.
+struct DrawnSkeleton {
+    std::vector<std::size_t> seeds;  // the grid nodes taken
+    std::vector<Edge> openBones;     // cycle-closing bones whose loop could not be closed
+};
+
+DrawnSkeleton drawSkeleton(const FieldGrid& grid, const SkeletonGraph& skeleton, Region& region) {
+    DrawnSkeleton result;
+    std::vector<std::size_t>& seeds = result.seeds;
     const auto cellOf = [&](const Point& p) {
         std::array<int, 3> c{};
         for (int a = 0; a < 3; ++a)
             c[a] = std::clamp(int(std::lround((p[a] - grid.origin[a]) / grid.spacing)), 1, grid.nodes[a] - 2);
         return c;
     };
-    const auto take = [&](const std::array<int, 3>& c, bool evenIfNotSimple) {
-        const std::size_t n = grid.index(c[0], c[1], c[2]);
-        if (region.contains(n) || (!evenIfNotSimple && !isSimple(region.insideMask(n)))) return;
+    const auto add = [&](std::size_t n) {
         region.add(n);
         seeds.push_back(n);
     };
-    // One axis at a time from a to b, so that consecutive nodes share a face.
-    const auto drawBone = [&](const Point& a, const Point& b, bool evenIfNotSimple) {
+    // A bone's chain, one axis at a time from a to b, so that consecutive nodes share a face.
+    // A cycle-closing bone may take one node that closes a loop.
+    const auto drawBone = [&](const Point& a, const Point& b, bool closesCycle) {
+        bool loopClosed = false;
         const int steps = std::max(1, int(std::ceil(4 * (b - a).norm() / grid.spacing)));
         std::array<int, 3> at = cellOf(a);
         for (int s = 1; s <= steps; ++s) {
@@ -152,41 +180,60 @@ std::vector<std::size_t> drawSkeleton(const FieldGrid& grid, const SkeletonGraph
                 for (int c = 1; c < 3; ++c)
                     if (std::abs(next[c] - at[c]) > std::abs(next[axis] - at[axis])) axis = c;
                 at[axis] += next[axis] > at[axis] ? 1 : -1;
-                take(at, evenIfNotSimple);
+                const std::size_t n = grid.index(at[0], at[1], at[2]);
+                if (region.contains(n)) continue;
+                const std::uint32_t around = region.insideMask(n);
+                if (isSimple(around)) {
+                    add(n);
+                } else if (closesCycle && !loopClosed && closesOneLoop(around)) {
+                    add(n);
+                    loopClosed = true;
+                }
             }
         }
+        return loopClosed;
+    };
+    const auto drawn = [&](int node) {
+        const std::array<int, 3> c = cellOf(skeleton.nodes[node]);
+        return region.contains(grid.index(c[0], c[1], c[2]));
     };
     // Spanning forest, breadth first from each component's first node: a bone is drawn
     // from a node already drawn, so its chain starts in the region.
     const std::vector<std::vector<int>> neighbours = adjacencyLists(skeleton.nodeCount(), skeleton.edges);
     std::vector<int> parent(skeleton.nodeCount(), -2);  // -2 not reached, -1 a root
+    // One root per component of the skeleton: a node no bone could reach is not a new part.
+    DisjointSets parts(skeleton.nodeCount());
+    for (const Edge& e : skeleton.edges) parts.unite(e[0], e[1]);
+    std::vector<char> partStarted(skeleton.nodeCount(), 0);
     for (std::size_t root = 0; root < skeleton.nodeCount(); ++root) {
-        if (parent[root] != -2) continue;
+        char& started = partStarted[std::size_t(parts.find(int(root)))];
+        if (started) continue;
+        started = 1;
         parent[root] = -1;
-        take(cellOf(skeleton.nodes[root]), true);  // a new component
+        const std::array<int, 3> c = cellOf(skeleton.nodes[root]);
+        if (!region.contains(grid.index(c[0], c[1], c[2]))) add(grid.index(c[0], c[1], c[2]));  // a new component
         std::vector<int> queue{int(root)};
         for (std::size_t q = 0; q < queue.size(); ++q) {
             const int from = queue[q];
             for (int to : neighbours[from]) {
                 if (parent[to] != -2) continue;
+                drawBone(skeleton.nodes[from], skeleton.nodes[to], false);
+                if (!drawn(to)) continue;  // blocked: left for another bone
                 parent[to] = from;
                 queue.push_back(to);
-                drawBone(skeleton.nodes[from], skeleton.nodes[to], false);
             }
         }
     }
-    // The other bones each close one of the skeleton's independent cycles: drawn whole, but
-    // only between ends the forest reached (a chain from an end left out would start a part
-    // of its own; the cycle is then missing and the caller's check says so).
-    const auto drawn = [&](int node) {
-        const std::array<int, 3> c = cellOf(skeleton.nodes[node]);
-        return region.contains(grid.index(c[0], c[1], c[2]));
-    };
+    // The other bones, between ends the forest reached (a chain from an end left out would
+    // start a part of its own; the cycle is then missing and the caller's check says so).
     for (const Edge& e : skeleton.edges) {
         if (parent[e[0]] == e[1] || parent[e[1]] == e[0] || !drawn(e[0]) || !drawn(e[1])) continue;
-        drawBone(skeleton.nodes[e[0]], skeleton.nodes[e[1]], true);
+        // From the other end if a crowded cell blocked the way.
+        if (!drawBone(skeleton.nodes[e[0]], skeleton.nodes[e[1]], true) &&
+            !drawBone(skeleton.nodes[e[1]], skeleton.nodes[e[0]], true))
+            result.openBones.push_back(e);
     }
-    return seeds;
+    return result;
 }
 
 // Grows the region from the seeds (already in it) through the nodes with negative values,
@@ -261,17 +308,51 @@ void separateDiagonalContacts(const FieldGrid& grid, std::vector<double>& values
             }
 }
 
+// A loop of the skeleton that its bone could not close (the chain met the region only
+// where it would have closed more than one): once the region has grown, the inside nodes
+// left out within the bone's reach are where the data closes it. The most inside of those
+// that closes exactly one loop is taken, and growth resumes from it. Returns whether it closed.
+bool closeLoopNear(const FieldGrid& grid, const SkeletonGraph& skeleton, const Edge& bone, Region& region,
+                   const std::vector<double>& values) {
+    const Point a = skeleton.nodes[std::size_t(bone[0])], b = skeleton.nodes[std::size_t(bone[1])];
+    const double reach = std::max(skeleton.radii[std::size_t(bone[0])], skeleton.radii[std::size_t(bone[1])]) + grid.spacing;
+    std::array<int, 3> low{}, high{};
+    for (int axis = 0; axis < 3; ++axis) {
+        low[axis] = std::max(1, int(std::floor((std::min(a[axis], b[axis]) - reach - grid.origin[axis]) / grid.spacing)));
+        high[axis] = std::min(grid.nodes[axis] - 2, int(std::ceil((std::max(a[axis], b[axis]) + reach - grid.origin[axis]) / grid.spacing)));
+    }
+    std::size_t best = 0;
+    double bestValue = 0.0;
+    for (int k = low[2]; k <= high[2]; ++k)
+        for (int j = low[1]; j <= high[1]; ++j)
+            for (int i = low[0]; i <= high[0]; ++i) {
+                const std::size_t n = grid.index(i, j, k);
+                if (values[n] >= bestValue || region.contains(n)) continue;
+                const Point p = grid.position(i, j, k);
+                const double t = std::clamp((p - a).dot(b - a) / std::max((b - a).squaredNorm(), 1e-300), 0.0, 1.0);
+                if ((p - (a + t * (b - a))).norm() > reach || !closesOneLoop(region.insideMask(n))) continue;
+                best = n;
+                bestValue = values[n];
+            }
+    if (bestValue >= 0.0) return false;
+    region.add(best);
+    grow(region, values, {best});
+    return true;
+}
+
 }  // namespace
 
 TopologyControl constrainToSkeletonTopology(const FieldGrid& grid, const SkeletonGraph& skeleton,
                                             std::vector<double>& values) {
     TopologyControl result;
     Region region(grid);
-    const std::vector<std::size_t> seeds = drawSkeleton(grid, skeleton, region);
+    const DrawnSkeleton drawing = drawSkeleton(grid, skeleton, region);
+    const std::vector<std::size_t>& seeds = drawing.seeds;
     result.seedNodes = seeds.size();
     // The skeleton is inside by definition, even where a bone is thinner than a cell.
     for (std::size_t s : seeds) values[s] = std::min(values[s], -kNudgedInside * grid.spacing);
     grow(region, values, seeds);
+    for (const Edge& bone : drawing.openBones) closeLoopNear(grid, skeleton, bone, region, values);
 
     std::vector<std::size_t> removed;
     for (std::size_t n = 0; n < values.size(); ++n) {

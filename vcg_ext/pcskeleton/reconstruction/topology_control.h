@@ -6,7 +6,10 @@
 // negative first, and a node is taken only if it is a simple point of the region grown so
 // far: adding it changes neither the number of components, nor of tunnels, nor of
 // cavities (digital topology, the inside 6-connected and the outside 26-connected). The
-// skeleton's bones, drawn into the grid as 6-connected chains of nodes, are the seed.
+// skeleton's bones, drawn into the grid as 6-connected chains of nodes, are the seed; a
+// loop that a bone's chain cannot close where bones crowd (it would close two at once) is
+// closed, once the region has grown, at the inside node near that bone that closes
+// exactly one.
 // Inside nodes never taken (a handle or a bridge the skeleton does not have, an island
 // away from it) are set just outside. Elsewhere the field is left as it was, so where the
 // data and the skeleton agree the surface does not move.
