@@ -15,10 +15,10 @@
 
 #include <pcskeleton/curve_skeleton.h>
 #include <pcskeleton/internal/spatial_index.h>
+#include <pcskeleton/internal/stopwatch.h>
 #include <pcskeleton/reconstruction/skeleton_reconstruction.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -42,24 +42,20 @@ struct Row {
     double skeletonSeconds = 0, surfaceSeconds = 0;
 };
 
-double secondsSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 Row measure(const Subject& subject, const Condition& condition, std::size_t n, const ReconstructionParameters& parameters) {
     Row row;
     const PointList cloud = condition.make(subject, n, 11);
     const double diagonal = boundingBox(subject.sample(n, 11)).diagonal().norm();
-    auto start = std::chrono::steady_clock::now();
+    Stopwatch stage;
     const SkeletonResult skeleton = computeCurveSkeleton(cloud);
-    row.skeletonSeconds = secondsSince(start);
+    row.skeletonSeconds = stage.seconds();
     const SkeletonTopology expected = analyseTopology(skeleton.skeleton);
     row.skeletonComponents = expected.components;
     row.skeletonCycles = expected.cycles;
 
-    start = std::chrono::steady_clock::now();
+    stage.restart();
     const Reconstruction surface = reconstructFromSkeleton(cloud, skeleton.skeleton, parameters);
-    row.surfaceSeconds = secondsSince(start);
+    row.surfaceSeconds = stage.seconds();
     const SurfaceTopology& t = surface.report.topology;
     row.components = t.components;
     row.genus = t.genus;

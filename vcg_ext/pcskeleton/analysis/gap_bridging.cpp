@@ -27,14 +27,6 @@ struct Candidate {
     }
 };
 
-std::vector<int> componentOfNodes(const SkeletonGraph& skeleton) {
-    DisjointSets pieces(skeleton.nodeCount());
-    for (const Edge& e : skeleton.edges) pieces.unite(e[0], e[1]);
-    std::vector<int> component(skeleton.nodeCount());
-    for (std::size_t n = 0; n < component.size(); ++n) component[n] = pieces.find(int(n));
-    return component;
-}
-
 }  // namespace
 
 std::string describe(const GapBridgingReport& report) {
@@ -50,7 +42,10 @@ std::string describe(const GapBridgingReport& report) {
 GapBridgingReport bridgeGaps(SkeletonGraph& skeleton, double nodeSpacing, double gapLimit) {
     GapBridgingReport report;
     if (!(gapLimit > 0.0) || skeleton.nodeCount() < 2) return report;
-    const std::vector<int> component = componentOfNodes(skeleton);
+    DisjointSets pieces(skeleton.nodeCount());
+    for (const Edge& e : skeleton.edges) pieces.unite(e[0], e[1]);
+    std::vector<int> component(skeleton.nodeCount());  // each node's piece before any bridge
+    for (std::size_t n = 0; n < component.size(); ++n) component[n] = pieces.find(int(n));
     const double maxLength = gapLimit * nodeSpacing;
 
     std::vector<Candidate> candidates;
@@ -74,8 +69,6 @@ GapBridgingReport bridgeGaps(SkeletonGraph& skeleton, double nodeSpacing, double
 
     // Shortest first, and only between pieces still apart: a bridge never closes a cycle.
     std::sort(candidates.begin(), candidates.end());
-    DisjointSets pieces(skeleton.nodeCount());
-    for (std::size_t n = 0; n < component.size(); ++n) pieces.unite(component[n], int(n));
     for (const Candidate& c : candidates) {
         if (!pieces.unite(c.tip, c.node)) continue;
         report.bridges.push_back({std::min(c.tip, c.node), std::max(c.tip, c.node)});
