@@ -1,6 +1,7 @@
 #include "pcskeleton/contraction/point_denoising.h"
 
 #include "pcskeleton/core/errors.h"
+#include "pcskeleton/internal/local_plane.h"
 #include "pcskeleton/internal/spatial_index.h"
 
 #include <Eigen/Eigenvalues>
@@ -12,30 +13,6 @@
 
 namespace pcskeleton {
 
-namespace {
-
-// The PCA frame of some of the points: their centroid, and the eigenvectors of their
-// covariance by increasing spread (column 0 is the fitted plane's normal).
-struct LocalFrame {
-    Point centroid;
-    Eigen::Matrix3d axes;
-};
-
-LocalFrame fitLocalFrame(const PointList& points, const std::vector<int>& subset) {
-    LocalFrame frame{Point::Zero(), Eigen::Matrix3d::Identity()};
-    for (int j : subset) frame.centroid += points[std::size_t(j)];
-    frame.centroid /= double(subset.size());
-    Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-    for (int j : subset) {
-        const Point d = points[std::size_t(j)] - frame.centroid;
-        covariance += d * d.transpose();
-    }
-    frame.axes = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance).eigenvectors();
-    return frame;
-}
-
-}  // namespace
-
 double surfaceNoise(const PointList& points, int neighbours) {
     const PointIndex index(points);
     const long samples = long((points.size() + 6) / 7);
@@ -46,7 +23,7 @@ double surfaceNoise(const PointList& points, int neighbours) {
 #pragma omp for schedule(static)
         for (long s = 0; s < samples; ++s) {
             index.nearest(points[std::size_t(s) * 7], neighbours, found);
-            const LocalFrame frame = fitLocalFrame(points, found);
+            const LocalPlane frame = fitLocalPlane(points, found);
             const Point& centroid = frame.centroid;
             const Point normal = frame.axes.col(0), u = frame.axes.col(2), v = frame.axes.col(1);
             Eigen::MatrixXd basis(found.size(), 6);
@@ -95,7 +72,7 @@ PointList denoisedCopy(const PointList& points, int neighbours, int passes) {
 #pragma omp for schedule(static)
             for (long i = 0; i < long(current.size()); ++i) {
                 index.nearest(current[std::size_t(i)], neighbours, found);
-                const LocalFrame frame = fitLocalFrame(current, found);
+                const LocalPlane frame = fitLocalPlane(current, found);
                 const Point normal = frame.axes.col(0);
                 const Point& p = current[std::size_t(i)];
                 next[std::size_t(i)] = p - normal * normal.dot(p - frame.centroid);

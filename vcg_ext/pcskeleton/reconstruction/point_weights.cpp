@@ -1,8 +1,7 @@
 #include "pcskeleton/reconstruction/point_weights.h"
 
+#include "pcskeleton/internal/local_plane.h"
 #include "pcskeleton/internal/spatial_index.h"
-
-#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <cmath>
@@ -19,20 +18,6 @@ constexpr int kSpreadNeighbours = 16;
 // By bench_surface (README, Benchmarks): see ReconstructionParameters::adaptToNoise.
 constexpr double kFalloffPower = 4.0;
 
-double spreadAcrossPlane(const PointList& points, const std::vector<int>& neighbours) {
-    Point mean = Point::Zero();
-    for (int j : neighbours) mean += points[std::size_t(j)];
-    mean /= double(neighbours.size());
-    Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-    for (int j : neighbours) {
-        const Point d = points[std::size_t(j)] - mean;
-        covariance += d * d.transpose();
-    }
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
-    eigen.computeDirect(covariance / double(neighbours.size()), Eigen::EigenvaluesOnly);
-    return std::sqrt(std::max(0.0, eigen.eigenvalues()[0]));  // the smallest: across the plane
-}
-
 }  // namespace
 
 SurfacePointWeights noiseAdaptedWeights(const PointList& points, double cell, double surfaceWeight) {
@@ -46,7 +31,8 @@ SurfacePointWeights noiseAdaptedWeights(const PointList& points, double cell, do
 #pragma omp for schedule(static)
         for (long i = 0; i < long(points.size()); ++i) {
             index.nearest(points[std::size_t(i)], kSpreadNeighbours, neighbours);
-            const double spread = spreadAcrossPlane(points, neighbours) / cell;
+            // Root-mean-square distance from the plane: the smallest principal spread.
+            const double spread = std::sqrt(std::max(0.0, fitLocalPlane(points, neighbours).variances[0])) / cell;
             result.weight[std::size_t(i)] = surfaceWeight / (1.0 + std::pow(spread, kFalloffPower));
         }
     }
