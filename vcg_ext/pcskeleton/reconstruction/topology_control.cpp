@@ -193,10 +193,11 @@ DrawnSkeleton drawSkeleton(const FieldGrid& grid, const SkeletonGraph& skeleton,
         }
         return loopClosed;
     };
-    const auto drawn = [&](int node) {
+    const auto nodeCell = [&](std::size_t node) {
         const std::array<int, 3> c = cellOf(skeleton.nodes[node]);
-        return region.contains(grid.index(c[0], c[1], c[2]));
+        return grid.index(c[0], c[1], c[2]);
     };
+    const auto drawn = [&](int node) { return region.contains(nodeCell(std::size_t(node))); };
     // Spanning forest, breadth first from each component's first node: a bone is drawn
     // from a node already drawn, so its chain starts in the region.
     const std::vector<std::vector<int>> neighbours = adjacencyLists(skeleton.nodeCount(), skeleton.edges);
@@ -210,8 +211,7 @@ DrawnSkeleton drawSkeleton(const FieldGrid& grid, const SkeletonGraph& skeleton,
         if (started) continue;
         started = 1;
         parent[root] = -1;
-        const std::array<int, 3> c = cellOf(skeleton.nodes[root]);
-        if (!region.contains(grid.index(c[0], c[1], c[2]))) add(grid.index(c[0], c[1], c[2]));  // a new component
+        if (!region.contains(nodeCell(root))) add(nodeCell(root));  // a new component
         std::vector<int> queue{int(root)};
         for (std::size_t q = 0; q < queue.size(); ++q) {
             const int from = queue[q];
