@@ -6,6 +6,7 @@
 //        default sizes: 10000 100000 1000000
 #include "run_in_child.h"
 
+#include <pcskeleton/core/openmp_wait_policy.h>
 #include <pcskeleton/contraction/laplacian_contraction.h>
 #include "support/sampled_shapes.h"
 
@@ -48,6 +49,7 @@ const char* name(LinearSolver s) { return s == LinearSolver::Cholmod ? "CHOLMOD"
 }  // namespace
 
 int main(int argc, char** argv) {
+    pcskeleton::restartWithPassiveOpenMpWaits(argv);
     std::vector<std::size_t> sizes;
     std::vector<LinearSolver> solvers = {LinearSolver::Cholmod};
     for (int a = 1; a < argc; ++a) {

@@ -10,6 +10,7 @@
 #include "run_in_child.h"
 
 #include "support/sampled_shapes.h"
+#include <pcskeleton/core/openmp_wait_policy.h>
 #include <pcskeleton/reconstruction/skeleton_reconstruction.h>
 
 #include <chrono>
@@ -79,8 +80,16 @@ Row runCase(int shape, int resolution) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    pcskeleton::restartWithPassiveOpenMpWaits(argv);
     std::vector<int> resolutions;
-    for (int a = 1; a < argc; ++a) resolutions.push_back(std::atoi(argv[a]));
+    for (int a = 1; a < argc; ++a) {
+        const int resolution = std::atoi(argv[a]);
+        if (resolution < 16 || resolution > 512) {
+            std::fprintf(stderr, "usage: bench_reconstruction [RESOLUTION ...]   (each 16-512; default 64 128 256)\n");
+            return 2;
+        }
+        resolutions.push_back(resolution);
+    }
     if (resolutions.empty()) resolutions = {64, 128, 256};
 
     std::printf("Skeleton-driven reconstruction, 20000 points per shape, %ld cores\n", sysconf(_SC_NPROCESSORS_ONLN));

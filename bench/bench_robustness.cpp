@@ -39,6 +39,7 @@
 #include "robustness_suite.h"
 #include "run_in_child.h"
 
+#include <pcskeleton/core/openmp_wait_policy.h>
 #include <pcskeleton/curve_skeleton.h>
 #include <pcskeleton/io/point_cloud_io.h>
 #include <pcskeleton/analysis/tip_extension.h>
@@ -222,6 +223,7 @@ const char* const kUsage =
     "case written as a PLY file. POINTS: points per clean sample (6000).\n";
 
 int main(int argc, char** argv) {
+    pcskeleton::restartWithPassiveOpenMpWaits(argv);
     std::vector<std::string> args(argv + 1, argv + argc);
     const std::set<std::string> flags{"--paper",         "--no-refine",         "--no-recentre",
                                       "--extend-tips",   "--no-link-limit",     "--full-resolution",

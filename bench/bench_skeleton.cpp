@@ -12,6 +12,7 @@
 //        default sizes: 10000 100000 1000000 10000000
 #include "run_in_child.h"
 
+#include <pcskeleton/core/openmp_wait_policy.h>
 #include <pcskeleton/curve_skeleton.h>
 #include <pcskeleton/io/point_cloud_io.h>
 #include "support/sampled_shapes.h"
@@ -111,6 +112,7 @@ Row runCase(const std::string& file, const SkeletonParameters& parameters) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    pcskeleton::restartWithPassiveOpenMpWaits(argv);
     std::vector<std::size_t> sizes;
     SkeletonParameters parameters;
     for (int a = 1; a < argc; ++a) {

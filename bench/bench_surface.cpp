@@ -13,6 +13,7 @@
 #include "robustness_suite.h"
 #include "run_in_child.h"
 
+#include <pcskeleton/core/openmp_wait_policy.h>
 #include <pcskeleton/curve_skeleton.h>
 #include <pcskeleton/internal/spatial_index.h>
 #include <pcskeleton/internal/stopwatch.h>
@@ -88,6 +89,7 @@ struct Tally {
 }  // namespace
 
 int main(int argc, char** argv) {
+    pcskeleton::restartWithPassiveOpenMpWaits(argv);
     std::size_t n = 6000;
     ReconstructionParameters parameters;
     std::string onlyShape;

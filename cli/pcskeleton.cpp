@@ -1,6 +1,7 @@
 // pcskeleton: point cloud in, curve skeleton out, from the command line. Built from
 // vcg_ext alone (no Qt, no X server) for pipelines, benchmarks and headless machines.
 #include <pcskeleton/curve_skeleton.h>
+#include <pcskeleton/core/openmp_wait_policy.h>
 #include <pcskeleton/reconstruction/skeleton_reconstruction.h>
 #include <pcskeleton/io/input_file.h>
 #include <pcskeleton/io/mesh_io.h>
@@ -403,6 +404,7 @@ void writeCorrespondence(const SkeletonGraph& skeleton, const std::string& path)
 }  // namespace
 
 int main(int argc, char** argv) {
+    restartWithPassiveOpenMpWaits(argv);
     Options options;
     try {
         if (!parseArguments(argc, argv, options)) {
