@@ -8,7 +8,8 @@
 #     into deps/meshlab-src (Debian ships no MeshLab SDK package); the build reads the
 #     version there and builds the plugins for it,
 #   - what the tests and the demo run with (Xvfb, xdotool, ImageMagick, matplotlib,
-#     libcgal-demo's real models).
+#     libcgal-demo's real models),
+#   - the Python module's build and tests (python3-dev, pybind11, pytest, networkx, Open3D).
 # Idempotent: a second run checks and returns in a second or two.
 # Runs as root (CI) or as a user with sudo.
 set -euo pipefail
@@ -23,6 +24,7 @@ PACKAGES=(
   libsuitesparse-dev libopenblas0-pthread libgtest-dev
   meshlab dpkg-dev
   xvfb xauth xdotool imagemagick python3 python3-matplotlib python3-pil python3-numpy
+  python3-dev pybind11-dev python3-pytest python3-networkx python3-open3d
   libcgal-demo
 )
 

@@ -33,7 +33,7 @@ fi
 if [ "${PCSKELETON_SANITIZE:-1}" != 0 ]; then
   echo "== The same tests under AddressSanitizer + UndefinedBehaviorSanitizer (build-sanitize/)"
   cmake -S "$ROOT" -B "$ROOT/build-sanitize" -DCMAKE_BUILD_TYPE=Release -DPCSKELETON_SANITIZE=ON \
-    -DPCSKELETON_BUILD_PLUGINS=OFF -DPCSKELETON_BUILD_BENCH=OFF >/dev/null
+    -DPCSKELETON_BUILD_PLUGINS=OFF -DPCSKELETON_BUILD_BENCH=OFF -DPCSKELETON_BUILD_PYTHON=OFF >/dev/null
   cmake --build "$ROOT/build-sanitize" -j"$(nproc)"
   export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1"
   export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"

@@ -22,7 +22,7 @@ start=$SECONDS
 chroot "$CHROOT" /usr/bin/env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin HOME=/root LANG=C.UTF-8 \
   CCACHE_DIR=/var/cache/ccache bash -euo pipefail -c '
   cmake -S "$1" -B "$2" -DCMAKE_BUILD_TYPE=Release -DMESHLAB_SOURCE_DIR=/src/meshlab \
-    -DPCSKELETON_BUILD_TESTS=ON -DPCSKELETON_BUILD_BENCH=OFF -DPCSKELETON_BUILD_LIBRARY_TESTS=OFF -Wno-dev >/dev/null
+    -DPCSKELETON_BUILD_TESTS=ON -DPCSKELETON_BUILD_BENCH=OFF -DPCSKELETON_BUILD_LIBRARY_TESTS=OFF -DPCSKELETON_BUILD_PYTHON=OFF -Wno-dev >/dev/null
   cmake --build "$2" -j"$(nproc)"
 ' _ "$ROOT" "$BUILD"
 built=$SECONDS

@@ -1,0 +1,637 @@
+// The Python binding of vcg_ext: numpy arrays in and out, the library's calls one for one.
+// No algorithm here. The package around it (python/pcskeleton/__init__.py) adds the
+// documentation, the keyword checks' help and the networkx/Open3D conversions.
+#include <pcskeleton/curve_skeleton.h>
+#include <pcskeleton/core/errors.h>
+#include <pcskeleton/editing/skeleton_editing.h>
+#include <pcskeleton/io/mesh_io.h>
+#include <pcskeleton/io/point_cloud_io.h>
+#include <pcskeleton/io/skeleton_io.h>
+#include <pcskeleton/reconstruction/skeleton_reconstruction.h>
+
+#include <pybind11/functional.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <utility>
+
+namespace py = pybind11;
+using namespace pcskeleton;
+
+namespace {
+
+using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
+using IntArray = py::array_t<int, py::array::c_style | py::array::forcecast>;
+
+// ---- Words: the library's advice names this module's keywords -------------------------
+
+std::string keywordOf(Parameter parameter) {
+    switch (parameter) {
+        case Parameter::NeighbourCount: return "k";
+        case Parameter::InitialContractionWeight: return "wl";
+        case Parameter::InitialAttractionWeight: return "wh";
+        case Parameter::ContractionScale: return "sl";
+        case Parameter::MaxContractionWeight: return "max_wl";
+        case Parameter::MaxAttractionWeight: return "max_wh";
+        case Parameter::LaplacianRowLimit: return "row_limit";
+        case Parameter::MaxIterations: return "iterations";
+        case Parameter::TerminationThreshold: return "threshold";
+        case Parameter::NodeSpacing: return "radius";
+        case Parameter::Refinement: return "refine";
+        case Parameter::OutlierDetection: return "outlier detection (keep_outliers=True turns it off)";
+        case Parameter::OutlierIsolation: return "outlier_isolation";
+        case Parameter::OutlierLocalFactor: return "outlier_local";
+        case Parameter::OutlierClusterShare: return "outlier_cluster";
+        case Parameter::DenoisingPasses: return "denoise";
+        case Parameter::LinkLimit: return "link_limit";
+        case Parameter::GapLimit: return "gap_limit";
+        case Parameter::ContractedPoints: return "contracted_points";
+        case Parameter::Resolution: return "resolution";
+        case Parameter::SmoothWeight: return "smooth_weight";
+        case Parameter::SurfaceWeight: return "surface_weight";
+        case Parameter::SkeletonWeight: return "skeleton_weight";
+        case Parameter::OutsideWeight: return "outside_weight";
+        case Parameter::OutsideDistance: return "outside_radii";
+        case Parameter::SkeletonTopology: return "the topology guarantee (data_topology=True turns it off)";
+    }
+    return libraryTerms().parameter(parameter);
+}
+
+std::string stepInPython(Step step) {
+    switch (step) {
+        case Step::DeleteNodes: return "delete them (SkeletonEditor.delete_nodes)";
+        case Step::MergeNodes: return "merge their nodes (SkeletonEditor.merge_nodes)";
+        case Step::SetNodeRadii: return "give the skeleton radii (SkeletonEditor.set_radius)";
+        case Step::ComputeSkeleton: return "compute the skeleton of these points (pcskeleton.skeletonize)";
+        default: return libraryTerms().step(step);
+    }
+}
+
+const Terms& pythonTerms() {
+    static const Terms terms{keywordOf, stepInPython};
+    return terms;
+}
+
+// The problem in this module's words. A refused keyword leads its sentence as written
+// (`resolution must be ...`): Python names are case-sensitive, so it is not capitalised.
+std::string messageOf(const Problem& problem) {
+    if (!problem.subject) return describe(problem, pythonTerms());
+    Problem rest = problem;
+    rest.subject.reset();
+    return keywordOf(*problem.subject) + " " + describe(rest, pythonTerms());
+}
+
+const char* remedyVerb(Remedy::Kind kind) {
+    switch (kind) {
+        case Remedy::Kind::Raise: return "raise";
+        case Remedy::Kind::Lower: return "lower";
+        case Remedy::Kind::TurnOn: return "turn_on";
+        case Remedy::Kind::TurnOff: return "turn_off";
+        case Remedy::Kind::Take: return "take";
+    }
+    return "";
+}
+
+// {"message": ..., "remedies": [("raise", "iterations"), ...]}
+py::dict problemDict(const Problem& problem) {
+    py::list remedies;
+    for (const Remedy& r : problem.remedies) {
+        const std::string what = r.kind == Remedy::Kind::Take ? stepInPython(r.step) : keywordOf(r.parameter);
+        remedies.append(py::make_tuple(remedyVerb(r.kind), what));
+    }
+    py::dict d;
+    d["message"] = messageOf(problem);
+    d["remedies"] = remedies;
+    return d;
+}
+
+// ---- Parameters: each keyword is one field of the library's parameter structs ----------
+
+struct Settings {
+    SkeletonParameters skeleton;
+    ReconstructionParameters reconstruction;
+};
+
+struct Keyword {
+    std::function<py::object(const Settings&)> get;
+    std::function<void(Settings&, py::handle)> set;
+};
+
+template <class T, class Field>
+Keyword field(Field f) {
+    return {[f](const Settings& s) { return py::cast(f(const_cast<Settings&>(s))); },
+            [f](Settings& s, py::handle v) { f(s) = v.cast<T>(); }};
+}
+// A keyword that is true when the library's flag is off (keep_outliers = !detect, ...).
+template <class Field>
+Keyword inverted(Field f) {
+    return {[f](const Settings& s) { return py::cast(!f(const_cast<Settings&>(s))); },
+            [f](Settings& s, py::handle v) { f(s) = !v.cast<bool>(); }};
+}
+
+const std::map<std::string, Keyword>& skeletonKeywords() {
+    static const std::map<std::string, Keyword> keywords = {
+        {"k", field<int>([](Settings& s) -> int& { return s.skeleton.contraction.neighbourCount; })},
+        {"wl", field<double>([](Settings& s) -> double& { return s.skeleton.contraction.initialContractionWeight; })},
+        {"wh", field<double>([](Settings& s) -> double& { return s.skeleton.contraction.initialAttractionWeight; })},
+        {"sl", field<double>([](Settings& s) -> double& { return s.skeleton.contraction.contractionScale; })},
+        {"max_wl", field<double>([](Settings& s) -> double& { return s.skeleton.contraction.maxContractionWeight; })},
+        {"max_wh", field<double>([](Settings& s) -> double& { return s.skeleton.contraction.maxAttractionWeight; })},
+        {"row_limit", field<double>([](Settings& s) -> double& { return s.skeleton.contraction.laplacianRowLimit; })},
+        {"iterations", field<int>([](Settings& s) -> int& { return s.skeleton.contraction.maxIterations; })},
+        {"threshold", field<double>([](Settings& s) -> double& { return s.skeleton.contraction.terminationThreshold; })},
+        {"denoise", field<int>([](Settings& s) -> int& { return s.skeleton.contraction.denoisingPasses; })},
+        {"keep_outliers", inverted([](Settings& s) -> bool& { return s.skeleton.contraction.outliers.detect; })},
+        {"outlier_isolation",
+         field<double>([](Settings& s) -> double& { return s.skeleton.contraction.outliers.isolationFactor; })},
+        {"outlier_local", field<double>([](Settings& s) -> double& { return s.skeleton.contraction.outliers.localFactor; })},
+        {"outlier_cluster",
+         field<double>([](Settings& s) -> double& { return s.skeleton.contraction.outliers.clusterShare; })},
+        {"radius", field<double>([](Settings& s) -> double& { return s.skeleton.thinning.sampleRadius; })},
+        {"link_limit", field<double>([](Settings& s) -> double& { return s.skeleton.thinning.linkLimit; })},
+        {"gap_limit", field<double>([](Settings& s) -> double& { return s.skeleton.thinning.gapLimit; })},
+        {"extend_tips", field<bool>([](Settings& s) -> bool& { return s.skeleton.thinning.extendTips; })},
+        {"refine", field<bool>([](Settings& s) -> bool& { return s.skeleton.thinning.refine; })},
+        {"recentre", field<bool>([](Settings& s) -> bool& { return s.skeleton.thinning.recentre; })},
+        {"contracted_points",
+         {[](const Settings& s) { return py::cast(s.skeleton.resolution.maxContractedPoints); },
+          [](Settings& s, py::handle v) {
+              const long count = v.cast<long>();
+              if (count < 1)
+                  throw InvalidInput("contracted_points must be at least 1 (full_resolution=True contracts every point).");
+              s.skeleton.resolution.maxContractedPoints = std::size_t(count);
+          }}},
+        {"full_resolution",
+         {[](const Settings& s) { return py::cast(s.skeleton.resolution.maxContractedPoints == 0); },
+          [](Settings& s, py::handle v) {
+              if (v.cast<bool>()) s.skeleton.resolution.maxContractedPoints = 0;
+          }}},
+        {"memory_limit",  // GB, as the CLI's --memory-limit; None = 80% of the machine
+         {[](const Settings& s) {
+              return s.skeleton.resolution.memoryLimit > 0 ? py::cast(s.skeleton.resolution.memoryLimit / 1e9) : py::none();
+          },
+          [](Settings& s, py::handle v) {
+              if (v.is_none()) return;
+              const double gigabytes = v.cast<double>();
+              if (!(gigabytes > 0) || !std::isfinite(gigabytes))
+                  throw InvalidInput("memory_limit must be a positive number of GB.");
+              s.skeleton.resolution.memoryLimit = gigabytes * 1e9;
+          }}},
+    };
+    return keywords;
+}
+
+const std::map<std::string, Keyword>& reconstructionKeywords() {
+    static const std::map<std::string, Keyword> keywords = {
+        {"resolution", field<int>([](Settings& s) -> int& { return s.reconstruction.resolution; })},
+        {"smooth_weight", field<double>([](Settings& s) -> double& { return s.reconstruction.smoothWeight; })},
+        {"surface_weight", field<double>([](Settings& s) -> double& { return s.reconstruction.surfaceWeight; })},
+        {"skeleton_weight", field<double>([](Settings& s) -> double& { return s.reconstruction.skeletonWeight; })},
+        {"outside_weight", field<double>([](Settings& s) -> double& { return s.reconstruction.outsideWeight; })},
+        {"outside_radii", field<double>([](Settings& s) -> double& { return s.reconstruction.outsideRadii; })},
+        {"data_topology", inverted([](Settings& s) -> bool& { return s.reconstruction.keepSkeletonTopology; })},
+        {"uniform_point_weights", inverted([](Settings& s) -> bool& { return s.reconstruction.adaptToNoise; })},
+    };
+    return keywords;
+}
+
+// Applies `kwargs` to the library's defaults: `paper=True` first (the paper's pipeline),
+// then every other keyword, so that `paper=True, refine=True` means the paper plus refinement,
+// as `--paper --refine` on the CLI. Unknown keywords are a TypeError, as in any Python call.
+Settings settingsFrom(const py::dict& kwargs, const std::map<std::string, Keyword>& known, const char* function) {
+    Settings s;
+    if (kwargs.contains("paper") && kwargs["paper"].cast<bool>()) {
+        s.skeleton.keepToThePaper();
+        s.reconstruction.keepSkeletonTopology = false;
+        s.reconstruction.adaptToNoise = false;
+    }
+    for (const auto& [key, value] : kwargs) {
+        const std::string name = key.cast<std::string>();
+        if (name == "paper") continue;
+        const auto keyword = known.find(name);
+        if (keyword == known.end())
+            throw py::type_error(std::string(function) + "() got an unexpected keyword argument '" + name + "'");
+        try {
+            keyword->second.set(s, value);
+        } catch (const py::cast_error&) {
+            throw py::type_error(std::string(function) + "(): " + name + " must be of type " +
+                                 std::string(py::str(keyword->second.get(Settings{}).get_type().attr("__name__"))) +
+                                 ", got " + std::string(py::str(value.get_type().attr("__name__"))));
+        }
+    }
+    return s;
+}
+
+py::dict defaultsOf(const std::map<std::string, Keyword>& keywords) {
+    const Settings defaults;
+    py::dict d;
+    for (const auto& [name, keyword] : keywords) d[name.c_str()] = keyword.get(defaults);
+    d["paper"] = false;
+    return d;
+}
+
+// ---- Arrays ----------------------------------------------------------------------------
+
+PointList pointsFrom(const DoubleArray& array, const char* what) {
+    if (array.ndim() != 2 || array.shape(1) != 3)
+        throw InvalidInput(std::string(what) + " must be an array of shape (n, 3); got one of " +
+                           std::to_string(array.ndim()) + " dimension(s)" +
+                           (array.ndim() == 2 ? " and " + std::to_string(array.shape(1)) + " columns" : "") + ".");
+    PointList points(std::size_t(array.shape(0)));
+    if (!points.empty()) std::memcpy(points.data()->data(), array.data(), points.size() * 3 * sizeof(double));
+    return points;
+}
+
+// A numpy array that owns `values` (moved, not copied) through a capsule.
+template <class T, std::size_t Columns>
+py::array arrayOwning(std::vector<T> values, std::size_t rows) {
+    auto* owned = new std::vector<T>(std::move(values));
+    py::capsule free(owned, [](void* p) { delete static_cast<std::vector<T>*>(p); });
+    using Scalar = std::conditional_t<std::is_same<T, Point>::value, double,
+                                      std::conditional_t<std::is_arithmetic<T>::value, T, int>>;
+    const auto* data = reinterpret_cast<const Scalar*>(owned->data());
+    const auto n = py::ssize_t(rows), columns = py::ssize_t(Columns);
+    if (Columns == 1) return py::array_t<Scalar>({n}, data, free);
+    return py::array_t<Scalar>({n, columns}, data, free);
+}
+py::array pointArray(PointList points) {
+    const std::size_t n = points.size();
+    return arrayOwning<Point, 3>(std::move(points), n);
+}
+
+// ---- Progress: Python's callback, called with the GIL from the thread that started -------
+
+// A Python exception raised by the callback cannot cross the library (its loops run
+// under OpenMP): it is kept, later reports are ignored, and it is raised after the call.
+class PythonProgress {
+public:
+    explicit PythonProgress(py::object callback) : callback_(std::move(callback)) {}
+    ProgressCallback callback() {
+        if (callback_.is_none()) return {};
+        return [this](int percent, const char* what) {
+            py::gil_scoped_acquire gil;
+            if (failed_) return;
+            try {
+                callback_(percent, what);
+            } catch (py::error_already_set& e) {
+                error_ = std::make_unique<py::error_already_set>(std::move(e));
+                failed_ = true;
+            }
+        };
+    }
+    void raiseIfFailed() {
+        if (error_) throw *error_;
+    }
+
+private:
+    py::object callback_;
+    bool failed_ = false;
+    std::unique_ptr<py::error_already_set> error_;
+};
+
+// Runs `work` without the GIL, with Python's progress callback.
+template <class Work>
+auto withoutGil(const py::object& progress, Work work) {
+    PythonProgress python(progress);
+    const ProgressCallback callback = python.callback();
+    auto result = [&] {
+        py::gil_scoped_release released;
+        return work(callback);
+    }();
+    python.raiseIfFailed();
+    return result;
+}
+
+// ---- The skeleton as Python sees it -----------------------------------------------------
+
+struct PySkeleton {
+    SkeletonGraph graph;
+    PointList contracted;        // empty when read from a file or edited
+    py::object report = py::none();  // a dict, or None
+};
+
+py::dict topologyDict(const SkeletonTopology& t) {
+    py::dict d;
+    d["nodes"] = t.nodes;
+    d["edges"] = t.edges;
+    d["components"] = t.components;
+    d["cycles"] = t.cycles;
+    d["tips"] = t.tips;
+    d["junctions"] = t.junctions;
+    d["isolated"] = t.isolated;
+    return d;
+}
+
+const char* warningKind(QualityWarning::Kind kind) {
+    switch (kind) {
+        case QualityWarning::Kind::IterationLimit: return "iteration_limit";
+        case QualityWarning::Kind::NumericalFailure: return "numerical_failure";
+        case QualityWarning::Kind::ManyOutliers: return "many_outliers";
+        case QualityWarning::Kind::UncontractedPoints: return "uncontracted_points";
+        case QualityWarning::Kind::PartsWithoutBone: return "parts_without_bone";
+        case QualityWarning::Kind::IsolatedNodes: return "isolated_nodes";
+        case QualityWarning::Kind::NodesOutside: return "nodes_outside";
+        case QualityWarning::Kind::Spurs: return "spurs";
+        case QualityWarning::Kind::SpuriousCycles: return "spurious_cycles";
+    }
+    return "unknown";
+}
+
+const char* stopReasonName(StopReason reason) {
+    switch (reason) {
+        case StopReason::NotStopped: return "not_stopped";
+        case StopReason::Converged: return "converged";
+        case StopReason::IterationLimit: return "iteration_limit";
+        case StopReason::NumericalFailure: return "numerical_failure";
+    }
+    return "unknown";
+}
+
+py::dict reportDict(const SkeletonResult& r) {
+    const SkeletonQuality& q = r.quality;
+    py::dict d;
+    d["topology"] = topologyDict(q.topology);
+    py::dict convergence;
+    convergence["stop_reason"] = stopReasonName(q.stopReason);
+    convergence["iterations"] = q.iterations;
+    convergence["extent_ratio"] = q.extentRatio;
+    d["convergence"] = convergence;
+    d["node_spacing"] = q.nodeSpacing;
+    d["input_points"] = q.inputPoints;
+    d["contracted_points"] = q.points;
+    d["multi_resolution"] = q.points < q.inputPoints;
+    d["outliers"] = q.outliers + q.inputOutliers;
+    d["denoising_passes"] = q.denoisingPasses;
+    py::list warnings;
+    for (const QualityWarning& w : q.warnings()) {
+        py::dict warning = problemDict(w.problem);
+        warning["kind"] = warningKind(w.kind);
+        warnings.append(warning);
+    }
+    d["warnings"] = warnings;
+    d["text"] = describe(q, pythonTerms());
+    const StageSeconds& s = r.seconds;
+    py::dict seconds;
+    seconds["subsampling"] = s.subsampling;
+    seconds["neighbourhoods"] = s.neighbourhoods;
+    seconds["contraction"] = s.contraction;
+    seconds["thinning"] = s.thinning;
+    seconds["embedding"] = s.embedding;
+    seconds["finishing"] = s.finishing;
+    d["seconds"] = seconds;
+    return d;
+}
+
+PySkeleton skeletonFrom(SkeletonResult result) {
+    PySkeleton s;
+    s.report = reportDict(result);
+    s.graph = std::move(result.skeleton);
+    s.contracted = std::move(result.contraction.contracted);
+    return s;
+}
+
+// A skeleton built from arrays (a user's own, or one changed in numpy) is checked as the
+// readers check a file.
+SkeletonGraph graphFromArrays(const DoubleArray& nodes, const IntArray& edges, const py::object& radii,
+                              const py::object& correspondence) {
+    SkeletonGraph g;
+    g.nodes = pointsFrom(nodes, "nodes");
+    if (edges.size() > 0 && (edges.ndim() != 2 || edges.shape(1) != 2))
+        throw InvalidInput("edges must be an array of shape (e, 2).");
+    for (py::ssize_t e = 0; e < (edges.size() ? edges.shape(0) : 0); ++e) g.edges.push_back({edges.at(e, 0), edges.at(e, 1)});
+    if (!radii.is_none()) {
+        const DoubleArray r = radii.cast<DoubleArray>();
+        g.radii.assign(r.data(), r.data() + r.size());
+    }
+    if (!correspondence.is_none()) {
+        const IntArray c = correspondence.cast<IntArray>();
+        g.pointNode.assign(c.data(), c.data() + c.size());
+    }
+    // Without radii (as from an .obj file) the graph is checked first, then its radii are
+    // estimated from the bones as the readers do.
+    const bool estimateRadii = g.radii.empty();
+    if (estimateRadii) g.radii.assign(g.nodes.size(), 1.0);
+    normalizeEdges(g.edges);
+    const std::string problem = invariantViolation(g);
+    if (!problem.empty()) throw InvalidInput("Not a valid skeleton: " + problem + ".");
+    if (estimateRadii) {
+        std::fill(g.radii.begin(), g.radii.end(), 0.0);
+        fillMissingRadii(g);
+    }
+    return g;
+}
+
+// ---- The step API: a contraction to watch, then its skeleton ----------------------------
+
+class PyContraction {
+public:
+    PyContraction(const DoubleArray& points, const py::dict& kwargs, const py::object& progress)
+        : points_(pointsFrom(points, "points")), settings_(settingsFrom(kwargs, skeletonKeywords(), "Contraction")) {
+        checkThinningParameters(settings_.skeleton.thinning);
+        withoutGil(progress, [&](const ProgressCallback& callback) {
+            work_ = std::make_unique<ContractionInput>(points_, settings_.skeleton.resolution,
+                                                       settings_.skeleton.contraction.outliers,
+                                                       progressRange(callback, 0, 40));
+            contraction_ = std::make_unique<LaplacianContraction>(work_->points(), settings_.skeleton.contraction,
+                                                                  progressRange(callback, 40, 100));
+            return 0;
+        });
+    }
+
+    py::dict iterate() {
+        const IterationReport r = [&] {
+            py::gil_scoped_release released;
+            return contraction_->iterate();
+        }();
+        py::dict d;
+        d["iteration"] = r.iteration;
+        d["extent_ratio"] = r.extentRatio;
+        d["contraction_weight"] = r.contractionWeight;
+        d["seconds"] = r.seconds;
+        return d;
+    }
+    bool finished() const { return contraction_->finished(); }
+    const char* stopReason() const { return stopReasonName(contraction_->stopReason()); }
+    py::array contracted() const { return pointArray(contraction_->contractedPoints()); }
+    py::array workingPoints() const { return pointArray(work_->points()); }
+
+    PySkeleton skeleton(const py::object& progress) const {
+        return skeletonFrom(withoutGil(progress, [&](const ProgressCallback& callback) {
+            SkeletonResult result = skeletonFromContraction(*contraction_, settings_.skeleton.thinning, callback);
+            work_->carryToAllPoints(result);
+            return result;
+        }));
+    }
+
+private:
+    PointList points_;  // ContractionInput refers to it
+    Settings settings_;
+    std::unique_ptr<ContractionInput> work_;
+    std::unique_ptr<LaplacianContraction> contraction_;
+};
+
+// Runs `f` on the editor and turns a refused edit into ValueError with the editor's words.
+class PyEditor {
+public:
+    explicit PyEditor(const PySkeleton& s) : editor_(s.graph) {}
+    SkeletonEditor& editor() { return editor_; }
+    PySkeleton skeleton() const {
+        PySkeleton s;
+        s.graph = editor_.skeleton();
+        return s;
+    }
+
+private:
+    SkeletonEditor editor_;
+};
+
+}  // namespace
+
+PYBIND11_MODULE(_pcskeleton, m) {
+    m.doc() = "Curve skeletons of point clouds by Laplacian-based contraction (Cao et al., SMI 2010): "
+              "the compiled core of the pcskeleton package.";
+
+    // The library's refusals are the user's input: ValueError with the library's message.
+    // A broken precondition is a bug: RuntimeError naming it as such.
+    py::register_exception_translator([](std::exception_ptr p) {
+        try {
+            if (p) std::rethrow_exception(p);
+        } catch (const InvalidInput& e) {
+            PyErr_SetString(PyExc_ValueError, messageOf(e.problem()).c_str());
+        } catch (const CallerError& e) {
+            PyErr_SetString(PyExc_RuntimeError, (std::string("pcskeleton internal error: ") + e.what()).c_str());
+        }
+    });
+
+    m.def("skeleton_defaults", [] { return defaultsOf(skeletonKeywords()); });
+    m.def("reconstruction_defaults", [] { return defaultsOf(reconstructionKeywords()); });
+
+    py::class_<PySkeleton>(m, "Skeleton")
+        .def(py::init([](const DoubleArray& nodes, const IntArray& edges, const py::object& radii,
+                         const py::object& correspondence) {
+                 PySkeleton s;
+                 s.graph = graphFromArrays(nodes, edges, radii, correspondence);
+                 return s;
+             }),
+             py::arg("nodes"), py::arg("edges"), py::arg("radii") = py::none(), py::arg("correspondence") = py::none())
+        .def_property_readonly("nodes", [](const PySkeleton& s) { return pointArray(s.graph.nodes); })
+        .def_property_readonly("edges",
+                               [](const PySkeleton& s) { return arrayOwning<Edge, 2>(s.graph.edges, s.graph.edges.size()); })
+        .def_property_readonly("radii",
+                               [](const PySkeleton& s) { return arrayOwning<double, 1>(s.graph.radii, s.graph.radii.size()); })
+        .def_property_readonly("correspondence", [](const PySkeleton& s) {
+            return arrayOwning<int, 1>(s.graph.pointNode, s.graph.pointNode.size());
+        })
+        .def_property_readonly("contracted", [](const PySkeleton& s) -> py::object {
+            if (s.contracted.empty()) return py::none();
+            return pointArray(s.contracted);
+        })
+        .def_readonly("report", &PySkeleton::report)
+        .def_property_readonly("topology", [](const PySkeleton& s) { return topologyDict(analyseTopology(s.graph)); })
+        .def("write", [](const PySkeleton& s, const std::string& path) { writeSkeleton(s.graph, path); }, py::arg("path"))
+        .def("__len__", [](const PySkeleton& s) { return s.graph.nodeCount(); });
+
+    m.def("_skeletonize", [](const DoubleArray& points, const py::dict& kwargs, const py::object& progress) {
+        const PointList input = pointsFrom(points, "points");
+        const Settings settings = settingsFrom(kwargs, skeletonKeywords(), "skeletonize");
+        return skeletonFrom(withoutGil(progress, [&](const ProgressCallback& callback) {
+            return computeCurveSkeleton(input, settings.skeleton, callback);
+        }));
+    });
+
+    py::class_<PyContraction>(m, "_Contraction")
+        .def(py::init<const DoubleArray&, const py::dict&, const py::object&>())
+        .def("iterate", &PyContraction::iterate)
+        .def_property_readonly("finished", &PyContraction::finished)
+        .def_property_readonly("stop_reason", &PyContraction::stopReason)
+        .def_property_readonly("contracted", &PyContraction::contracted)
+        .def_property_readonly("points", &PyContraction::workingPoints)
+        .def("_skeleton", &PyContraction::skeleton);
+
+    m.def("_reconstruct", [](const DoubleArray& points, const PySkeleton& skeleton, const py::dict& kwargs,
+                             const py::object& progress) {
+        const PointList input = pointsFrom(points, "points");
+        const Settings settings = settingsFrom(kwargs, reconstructionKeywords(), "reconstruct");
+        Reconstruction r = withoutGil(progress, [&](const ProgressCallback& callback) {
+            return reconstructFromSkeleton(input, skeleton.graph, settings.reconstruction, callback);
+        });
+        py::dict report;
+        report["genus"] = r.report.topology.genus;
+        report["components"] = r.report.topology.components;
+        report["closed"] = r.report.topology.closedManifold();
+        report["topology_controlled"] = r.report.topologyControlled;
+        report["converged"] = r.report.converged;
+        py::list warnings;
+        for (const ReconstructionWarning& w : r.report.warnings) warnings.append(problemDict(w.problem));
+        report["warnings"] = warnings;
+        report["text"] = describe(r.report, pythonTerms());
+        const std::size_t triangles = r.mesh.triangles.size();
+        return py::make_tuple(pointArray(std::move(r.mesh.vertices)),
+                              arrayOwning<std::array<int, 3>, 3>(std::move(r.mesh.triangles), triangles), report);
+    });
+
+    m.def("read_points", [](const std::string& path) {
+        PointList points;
+        {
+            py::gil_scoped_release released;
+            points = readPointCloud(path);
+        }
+        return pointArray(std::move(points));
+    }, py::arg("path"));
+    m.def("read_skeleton", [](const std::string& path) {
+        PySkeleton s;
+        s.graph = readSkeleton(path);
+        return s;
+    }, py::arg("path"));
+    m.def("write_points", [](const DoubleArray& points, const std::string& path) {
+        writePointCloud(pointsFrom(points, "points"), path);
+    }, py::arg("points"), py::arg("path"));
+    m.def("write_mesh", [](const DoubleArray& vertices, const IntArray& faces, const std::string& path) {
+        TriangleMesh mesh;
+        mesh.vertices = pointsFrom(vertices, "vertices");
+        if (faces.size() > 0 && (faces.ndim() != 2 || faces.shape(1) != 3))
+            throw InvalidInput("faces must be an array of shape (f, 3).");
+        for (py::ssize_t f = 0; f < (faces.size() ? faces.shape(0) : 0); ++f) {
+            std::array<int, 3> t{faces.at(f, 0), faces.at(f, 1), faces.at(f, 2)};
+            for (int v : t)
+                if (v < 0 || std::size_t(v) >= mesh.vertices.size())
+                    throw InvalidInput("faces: vertex index " + std::to_string(v) + " out of range.");
+            mesh.triangles.push_back(t);
+        }
+        writeTriangleMesh(mesh, path);
+    }, py::arg("vertices"), py::arg("faces"), py::arg("path"));
+
+    py::class_<PyEditor>(m, "SkeletonEditor")
+        .def(py::init<const PySkeleton&>(), py::arg("skeleton"))
+        .def_property_readonly("skeleton", &PyEditor::skeleton)
+        .def("move_nodes", [](PyEditor& e, const std::vector<int>& nodes, const std::array<double, 3>& offset) {
+            e.editor().moveNodes(nodes, Point(offset[0], offset[1], offset[2]));
+        }, py::arg("nodes"), py::arg("offset"))
+        .def("delete_nodes", [](PyEditor& e, const std::vector<int>& nodes) { e.editor().deleteNodes(nodes); },
+             py::arg("nodes"))
+        .def("delete_edge", [](PyEditor& e, int a, int b) { e.editor().deleteEdge(a, b); }, py::arg("a"), py::arg("b"))
+        .def("connect", [](PyEditor& e, int a, int b) { e.editor().connect(a, b); }, py::arg("a"), py::arg("b"))
+        .def("merge_nodes", [](PyEditor& e, const std::vector<int>& nodes) { return e.editor().mergeNodes(nodes); },
+             py::arg("nodes"))
+        .def("split_edge", [](PyEditor& e, int a, int b, double at) { return e.editor().splitEdge(a, b, at); },
+             py::arg("a"), py::arg("b"), py::arg("at") = 0.5)
+        .def("set_radius", [](PyEditor& e, const std::vector<int>& nodes, double r) { e.editor().setRadius(nodes, r); },
+             py::arg("nodes"), py::arg("radius"))
+        .def("scale_radius",
+             [](PyEditor& e, const std::vector<int>& nodes, double f) { e.editor().scaleRadius(nodes, f); },
+             py::arg("nodes"), py::arg("factor"))
+        .def_property_readonly("can_undo", [](PyEditor& e) { return e.editor().canUndo(); })
+        .def_property_readonly("can_redo", [](PyEditor& e) { return e.editor().canRedo(); })
+        .def_property_readonly("undo_text", [](PyEditor& e) { return e.editor().undoText(); })
+        .def_property_readonly("redo_text", [](PyEditor& e) { return e.editor().redoText(); })
+        .def("undo", [](PyEditor& e) { e.editor().undo(); })
+        .def("redo", [](PyEditor& e) { e.editor().redo(); });
+}

@@ -1,0 +1,302 @@
+"""The Python module against known answers, the CLI, and its own promises.
+
+Run by CTest (python_module) with PYTHONPATH=<build>/python and PCSKELETON_CLI set to the
+command-line tool built beside it.
+"""
+import os
+import subprocess
+import sys
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import pcskeleton
+import shapes
+
+
+@pytest.fixture(scope="module")
+def torus_points():
+    return shapes.torus()
+
+
+@pytest.fixture(scope="module")
+def torus_skeleton(torus_points):
+    return pcskeleton.skeletonize(torus_points)
+
+
+# ---- Known answers -----------------------------------------------------------------------
+
+def test_torus_has_one_cycle_and_every_point_a_node(torus_points, torus_skeleton):
+    s = torus_skeleton
+    assert s.report["topology"]["cycles"] == 1
+    assert s.report["topology"]["components"] == 1
+    assert s.report["topology"]["tips"] == 0
+    assert s.nodes.shape == (len(s.radii), 3) and s.nodes.dtype == np.float64
+    assert s.edges.shape[1] == 2 and s.edges.max() < len(s.nodes)
+    assert s.correspondence.shape == (len(torus_points),)
+    assert s.correspondence.min() >= 0 and s.correspondence.max() < len(s.nodes)
+    assert s.contracted.shape == torus_points.shape
+    # The nodes lie on the torus' centre circle, the radii near its tube radius.
+    assert np.allclose(np.linalg.norm(s.nodes[:, :2], axis=1), 1.0, atol=0.05)
+    assert np.allclose(s.radii, 0.25, rtol=0.1)
+
+
+def test_y_has_three_tips_and_one_junction():
+    s = pcskeleton.skeletonize(shapes.y_shape())
+    t = s.report["topology"]
+    assert (t["tips"], t["junctions"], t["cycles"], t["components"]) == (3, 1, 0, 1)
+
+
+def test_noisy_y_keeps_three_tips():
+    points = shapes.y_shape() + np.random.default_rng(3).normal(0, 0.005, (4500, 3))
+    assert pcskeleton.skeletonize(points).report["topology"]["tips"] == 3
+
+
+def test_outliers_get_no_node_and_are_reported(torus_points):
+    rng = np.random.default_rng(4)
+    outliers = rng.uniform(-1.3, 1.3, (40, 3))
+    s = pcskeleton.skeletonize(np.concatenate([torus_points, outliers]))
+    assert s.report["topology"]["cycles"] == 1
+    assert s.report["outliers"] >= 30
+    assert (s.correspondence[len(torus_points):] == -1).sum() >= 30
+    kept = pcskeleton.skeletonize(np.concatenate([torus_points, outliers]), keep_outliers=True)
+    assert (kept.correspondence >= 0).all()
+
+
+def test_input_array_is_not_modified(torus_points):
+    before = torus_points.copy()
+    pcskeleton.skeletonize(torus_points)
+    assert np.array_equal(before, torus_points)
+
+
+# ---- Parameters ----------------------------------------------------------------------------
+
+def test_every_keyword_is_documented_with_its_default():
+    for name, value in pcskeleton.SKELETON_PARAMETERS.items():
+        assert f"{name} [{value!r}]" in pcskeleton.skeletonize.__doc__
+    for name, value in pcskeleton.RECONSTRUCTION_PARAMETERS.items():
+        assert f"{name} [{value!r}]" in pcskeleton.reconstruct.__doc__
+
+
+def test_keywords_reach_the_library(torus_points):
+    one = pcskeleton.skeletonize(torus_points, iterations=1)
+    assert one.report["convergence"]["iterations"] == 1
+    assert one.report["convergence"]["stop_reason"] == "iteration_limit"
+    assert any(w["kind"] == "iteration_limit" for w in one.report["warnings"])
+    warning = next(w for w in one.report["warnings"] if w["kind"] == "iteration_limit")
+    assert ("raise", "iterations") in warning["remedies"]  # the advice names the keyword
+    coarse = pcskeleton.skeletonize(torus_points, radius=0.06)
+    assert len(coarse.nodes) < len(pcskeleton.skeletonize(torus_points).nodes)
+
+
+def test_paper_turns_the_added_steps_off_and_later_keywords_still_apply(torus_points):
+    paper = pcskeleton.skeletonize(torus_points, paper=True)
+    assert paper.report["outliers"] == 0
+    assert "Refinement" not in paper.report["text"] or "off" in paper.report["text"]
+    with_refine = pcskeleton.skeletonize(torus_points, paper=True, refine=True)
+    assert with_refine.report["topology"]["cycles"] == 1
+
+
+def test_multi_resolution_gives_every_point_a_node():
+    points = shapes.torus(count=30000, seed=5)
+    s = pcskeleton.skeletonize(points, contracted_points=8000)
+    assert s.report["multi_resolution"] and s.report["contracted_points"] <= 8000
+    assert s.report["topology"]["cycles"] == 1
+    assert (s.correspondence >= 0).all() and len(s.correspondence) == len(points)
+    with pytest.raises(ValueError, match="GB"):
+        pcskeleton.skeletonize(points, full_resolution=True, memory_limit=0.01)
+
+
+# ---- Errors ----------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("call, message", [
+    (lambda: pcskeleton.skeletonize(np.zeros((3, 3))), "Too few points"),
+    (lambda: pcskeleton.skeletonize(np.zeros((10, 2))), r"shape \(n, 3\)"),
+    (lambda: pcskeleton.skeletonize(shapes.torus(500), iterations=0), "at least 1"),
+    (lambda: pcskeleton.skeletonize(np.full((20, 3), np.nan)), "finite|NaN|not a number"),
+    (lambda: pcskeleton.read_points("/nonexistent/scan.ply"), "nonexistent"),
+    (lambda: pcskeleton.read_skeleton("/nonexistent/skeleton.ply"), "nonexistent"),
+])
+def test_bad_input_is_a_value_error_with_the_library_message(call, message):
+    with pytest.raises(ValueError, match=message):
+        call()
+
+
+def test_unknown_keyword_or_wrong_type_is_a_type_error(torus_points):
+    with pytest.raises(TypeError, match="unexpected keyword argument 'iteration'"):
+        pcskeleton.skeletonize(torus_points, iteration=3)
+    with pytest.raises(TypeError, match="iterations"):
+        pcskeleton.skeletonize(torus_points, iterations="many")
+
+
+def test_malformed_files_raise_value_error(tmp_path):
+    bad = tmp_path / "bad.ply"
+    bad.write_bytes(b"ply\nformat binary_little_endian 1.0\nelement vertex 1000000\n"
+                    b"property float x\nproperty float y\nproperty float z\nend_header\n\x00\x01")
+    with pytest.raises(ValueError):
+        pcskeleton.read_points(str(bad))
+    bad.write_bytes(b"ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nend_header\n1\nfoo\n")
+    with pytest.raises(ValueError):
+        pcskeleton.read_skeleton(str(bad))
+
+
+# ---- Files and the CLI ------------------------------------------------------------------------
+
+def test_same_skeleton_as_the_cli_byte_for_byte(tmp_path, torus_points):
+    cloud = tmp_path / "torus.ply"
+    pcskeleton.write_points(torus_points, str(cloud))
+    from_cli = tmp_path / "cli.ply"
+    subprocess.run([os.environ["PCSKELETON_CLI"], str(cloud), "-o", str(from_cli), "--quiet", "--radius", "0.03"],
+                   check=True)
+    from_python = tmp_path / "python.ply"
+    pcskeleton.skeletonize(pcskeleton.read_points(str(cloud)), radius=0.03).write(str(from_python))
+    assert from_cli.read_bytes() == from_python.read_bytes()
+
+
+@pytest.mark.parametrize("extension", ["ply", "obj", "cg"])
+def test_written_skeletons_read_back(tmp_path, torus_skeleton, extension):
+    path = tmp_path / f"skeleton.{extension}"
+    torus_skeleton.write(str(path))
+    again = pcskeleton.read_skeleton(str(path))
+    assert np.allclose(again.nodes, torus_skeleton.nodes, atol=1e-5)
+    assert np.array_equal(again.edges, torus_skeleton.edges)
+    if extension == "ply":
+        assert np.allclose(again.radii, torus_skeleton.radii, rtol=1e-5)
+
+
+def test_skeleton_from_arrays_is_checked():
+    s = pcskeleton.Skeleton(np.eye(3), np.array([[0, 1], [1, 2]]), radii=np.ones(3))
+    assert s.topology["tips"] == 2 and np.array_equal(s.radii, np.ones(3))
+    # Without radii, as from an .obj file: estimated from the bones, positive.
+    assert (pcskeleton.Skeleton(np.eye(3), np.array([[0, 1], [1, 2]])).radii > 0).all()
+    with pytest.raises(ValueError, match="skeleton"):
+        pcskeleton.Skeleton(np.eye(3), np.array([[0, 7]]))
+
+
+# ---- Step API, editing, reconstruction ---------------------------------------------------------
+
+def test_contraction_step_by_step_gives_the_one_call_skeleton(torus_points, torus_skeleton):
+    contraction = pcskeleton.Contraction(torus_points)
+    reports = []
+    while not contraction.finished:
+        reports.append(contraction.iterate())
+    assert contraction.stop_reason == "converged"
+    assert [r["iteration"] for r in reports] == list(range(1, len(reports) + 1))
+    assert reports[-1]["extent_ratio"] < 1
+    assert contraction.contracted.shape == contraction.points.shape
+    s = pcskeleton.skeleton_from_contraction(contraction)
+    assert np.array_equal(s.nodes, torus_skeleton.nodes) and np.array_equal(s.edges, torus_skeleton.edges)
+
+
+def test_editor_operations_undo_and_redo(torus_skeleton):
+    editor = pcskeleton.SkeletonEditor(torus_skeleton)
+    a, b = torus_skeleton.edges[0]
+    editor.delete_edge(int(a), int(b))
+    assert editor.skeleton.topology["cycles"] == 0 and editor.can_undo
+    merged = editor.merge_nodes([int(a), int(b)])
+    assert editor.skeleton.topology["nodes"] == len(torus_skeleton.nodes) - 1 and merged >= 0
+    editor.undo()
+    editor.undo()
+    assert np.array_equal(editor.skeleton.edges, torus_skeleton.edges) and not editor.can_undo
+    editor.redo()
+    assert editor.skeleton.topology["cycles"] == 0
+    with pytest.raises(ValueError, match="does not exist"):
+        editor.delete_nodes([10 ** 6])
+    # The editor works on its own copy.
+    assert torus_skeleton.topology["cycles"] == 1
+
+
+def test_reconstruction_follows_the_skeleton(torus_points, torus_skeleton):
+    vertices, faces, report = pcskeleton.reconstruct(torus_points, torus_skeleton, resolution=48)
+    assert report["genus"] == 1 and report["components"] == 1 and report["closed"]
+    assert faces.shape[1] == 3 and faces.max() < len(vertices)
+    editor = pcskeleton.SkeletonEditor(torus_skeleton)
+    editor.delete_edge(*map(int, torus_skeleton.edges[0]))
+    _, _, cut = pcskeleton.reconstruct(torus_points, editor.skeleton, resolution=48)
+    assert cut["genus"] == 0 and cut["components"] == 1
+
+
+def test_reconstruction_refuses_bad_parameters(torus_points, torus_skeleton):
+    with pytest.raises(ValueError, match="resolution"):
+        pcskeleton.reconstruct(torus_points, torus_skeleton, resolution=8)
+    with pytest.raises(TypeError, match="unexpected keyword argument 'radius'"):
+        pcskeleton.reconstruct(torus_points, torus_skeleton, radius=0.1)
+
+
+# ---- Interop -----------------------------------------------------------------------------------
+
+def test_networkx_graph(torus_skeleton):
+    networkx = pytest.importorskip("networkx")
+    graph = torus_skeleton.to_networkx()
+    assert graph.number_of_nodes() == len(torus_skeleton.nodes)
+    assert graph.number_of_edges() == len(torus_skeleton.edges)
+    assert len(networkx.cycle_basis(graph)) == 1
+    assert graph.nodes[0]["radius"] == pytest.approx(torus_skeleton.radii[0])
+
+
+def test_open3d_line_set_and_point_cloud_input(torus_points, torus_skeleton):
+    open3d = pytest.importorskip("open3d")
+    lines = torus_skeleton.to_open3d()
+    assert len(lines.lines) == len(torus_skeleton.edges) and len(lines.points) == len(torus_skeleton.nodes)
+    cloud = open3d.geometry.PointCloud(open3d.utility.Vector3dVector(torus_points))
+    from_open3d = pcskeleton.skeletonize(cloud)
+    assert np.array_equal(from_open3d.edges, torus_skeleton.edges)
+
+
+# ---- Progress, threads, memory -------------------------------------------------------------------
+
+def test_progress_is_reported_and_its_exception_raised(torus_points):
+    seen = []
+    pcskeleton.skeletonize(torus_points, progress=lambda percent, message: seen.append((percent, message)))
+    assert seen and seen[-1][0] == 100 and all(isinstance(m, str) for _, m in seen)
+
+    def stop(percent, message):
+        raise KeyboardInterrupt
+    with pytest.raises(KeyboardInterrupt):
+        pcskeleton.skeletonize(torus_points, progress=stop)
+
+
+def test_the_gil_is_released_during_the_work():
+    points = shapes.torus(count=12000, seed=6)
+    done = threading.Event()
+    worker = threading.Thread(target=lambda: (pcskeleton.skeletonize(points), done.set()))
+    ticks = 0
+    start = time.monotonic()
+    worker.start()
+    while not done.is_set():
+        ticks += 1
+        time.sleep(0.001)
+    worker.join()
+    elapsed = time.monotonic() - start
+    # Held GIL: the loop would run only between progress reports (a handful of ticks).
+    assert ticks > 0.2 * elapsed / 0.001, (ticks, elapsed)
+
+
+def resident_megabytes():
+    with open("/proc/self/statm") as statm:
+        return int(statm.read().split()[1]) * os.sysconf("SC_PAGE_SIZE") / 1e6
+
+
+def test_no_memory_growth_over_repeated_calls():
+    points = shapes.torus(count=2000, seed=7)
+    for _ in range(10):
+        s = pcskeleton.skeletonize(points)
+        _ = (s.nodes, s.edges, s.correspondence, s.contracted, s.report)
+    before = resident_megabytes()
+    for _ in range(100):
+        s = pcskeleton.skeletonize(points)
+        _ = (s.nodes, s.edges, s.correspondence, s.contracted, s.report, s.to_networkx())
+    growth = resident_megabytes() - before
+    # One call's arrays are about 0.1 MB: a leak of them would pass 10 MB.
+    assert growth < 5, f"{growth:.1f} MB more after 100 calls"
+
+
+def test_the_readme_example_draws_its_picture(tmp_path):
+    pytest.importorskip("matplotlib")
+    example = os.path.join(os.path.dirname(__file__), "..", "examples", "skeleton_picture.py")
+    picture = tmp_path / "elephant.png"
+    run = subprocess.run([sys.executable, example, "", str(picture)], capture_output=True, text=True, cwd=tmp_path)
+    assert run.returncode == 0, run.stderr
+    assert "Skeleton: " in run.stdout and picture.stat().st_size > 10000
