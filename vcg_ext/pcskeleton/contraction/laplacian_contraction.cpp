@@ -1,5 +1,6 @@
 #include "pcskeleton/contraction/laplacian_contraction.h"
 
+#include "pcskeleton/internal/gram_matrix.h"
 #include "pcskeleton/internal/stopwatch.h"
 
 #include <algorithm>
@@ -78,6 +79,7 @@ LaplacianContraction::LaplacianContraction(const PointList& input, const Contrac
     neighbourhoodSeconds_ = start.neighbourhoodSeconds;
 
     laplacian_ = std::make_unique<CotangentLaplacian>(rings_, parameters_.laplacianRowLimit);
+    normalEquations_ = std::make_unique<GramMatrix>(laplacian_->matrix());
     initialExtents_ = ringExtents(rings_, positions_);
     initialExtentSum_ = std::accumulate(initialExtents_.begin(), initialExtents_.end(), 0.0);
     if (!(initialExtentSum_ > 0)) throw InvalidInput("The points have no usable neighbourhoods.");
@@ -92,16 +94,16 @@ LaplacianContraction::LaplacianContraction(const PointList& input, const Contrac
 LaplacianContraction::~LaplacianContraction() = default;
 
 bool LaplacianContraction::solve(double contractionWeight, PointList& next) {
+    // W_L² LᵀL + W_H², lower triangle, filled in place: the pattern is the same every time.
     laplacian_->update(positions_);
-    const auto& L = laplacian_->matrix();
-    SparseSpdSolver::Matrix system = L.transpose() * L;
-    system *= contractionWeight * contractionWeight;
+    normalEquations_->update(laplacian_->matrix(), contractionWeight * contractionWeight);
+    SparseSpdSolver::Matrix& system = normalEquations_->matrix();
 
     const Eigen::Index n = static_cast<Eigen::Index>(positions_.size());
     Eigen::MatrixXd rhs(n, 3);
     for (Eigen::Index i = 0; i < n; ++i) {
         const double w2 = attractionWeights_[i] * attractionWeights_[i];
-        system.coeffRef(i, i) += w2;  // the diagonal is always in L^T L's pattern
+        system.valuePtr()[normalEquations_->diagonalSlot(int(i))] += w2;
         rhs.row(i) = w2 * positions_[i].transpose();
     }
     if (!solver_.factorize(system)) return false;

@@ -27,6 +27,8 @@
 
 namespace pcskeleton {
 
+class GramMatrix;
+
 // Defaults are the paper's (and its authors' reference code's). Lengths are measured
 // in the normalised frame of NormalizedCloud, so the defaults do not depend on units.
 struct ContractionParameters {
@@ -127,6 +129,7 @@ private:
     NormalizedCloud cloud_;
     OneRings rings_;
     std::unique_ptr<CotangentLaplacian> laplacian_;
+    std::unique_ptr<GramMatrix> normalEquations_;  // LᵀL, pattern analysed once
     SparseSpdSolver solver_;
     PointList positions_;
     std::vector<double> initialExtents_, attractionWeights_;
