@@ -250,21 +250,30 @@ PointList pointsFrom(const DoubleArray& array, const char* what) {
     return points;
 }
 
-// A numpy array that owns `values` (moved, not copied) through a capsule.
-template <class T, std::size_t Columns>
-py::array arrayOwning(std::vector<T> values, std::size_t rows) {
-    auto* owned = new std::vector<T>(std::move(values));
-    py::capsule free(owned, [](void* p) { delete static_cast<std::vector<T>*>(p); });
+// A vector of points, index pairs or triples, or numbers, seen by numpy as rows of scalars.
+template <class T>
+struct Rows {
     using Scalar = std::conditional_t<std::is_same<T, Point>::value, double,
                                       std::conditional_t<std::is_arithmetic<T>::value, T, int>>;
-    const auto* data = reinterpret_cast<const Scalar*>(owned->data());
-    const auto n = py::ssize_t(rows), columns = py::ssize_t(Columns);
-    if (Columns == 1) return py::array_t<Scalar>({n}, data, free);
-    return py::array_t<Scalar>({n, columns}, data, free);
+    static constexpr py::ssize_t columns = py::ssize_t(sizeof(T) / sizeof(Scalar));
+};
+
+// A numpy array over `values`' storage, kept alive by `base`: (n,) or (n, columns).
+template <class T>
+py::array arrayOver(const std::vector<T>& values, py::handle base) {
+    using Scalar = typename Rows<T>::Scalar;
+    const auto* data = reinterpret_cast<const Scalar*>(values.data());
+    const auto rows = py::ssize_t(values.size());
+    if (Rows<T>::columns == 1) return py::array_t<Scalar>({rows}, data, base);
+    return py::array_t<Scalar>({rows, Rows<T>::columns}, data, base);
 }
-py::array pointArray(PointList points) {
-    const std::size_t n = points.size();
-    return arrayOwning<Point, 3>(std::move(points), n);
+
+// A numpy array that owns `values` (moved, not copied) through a capsule.
+template <class T>
+py::array arrayOwning(std::vector<T> values) {
+    auto* owned = new std::vector<T>(std::move(values));
+    py::capsule free(owned, [](void* p) { delete static_cast<std::vector<T>*>(p); });
+    return arrayOver(*owned, free);
 }
 
 // ---- Progress: Python's callback, called with the GIL from the thread that started -------
@@ -317,6 +326,20 @@ struct PySkeleton {
     PointList contracted;        // empty when read from a file or edited
     py::object report = py::none();  // a dict, or None
 };
+
+// A read-only numpy view of one of the skeleton's arrays, no copy: it keeps the Skeleton
+// alive as its base. Read-only because the skeleton's arrays must stay consistent (edit
+// through SkeletonEditor, or copy with numpy).
+template <class T>
+py::array readOnlyView(const py::object& owner, const std::vector<T>& values) {
+    py::array view = arrayOver(values, owner);
+    view.attr("flags").attr("writeable") = false;
+    return view;
+}
+template <class T>
+py::array viewOf(const py::object& self, std::vector<T> SkeletonGraph::*member) {
+    return readOnlyView(self, self.cast<const PySkeleton&>().graph.*member);
+}
 
 py::dict topologyDict(const SkeletonTopology& t) {
     py::dict d;
@@ -460,8 +483,8 @@ public:
     }
     bool finished() const { return contraction_->finished(); }
     const char* stopReason() const { return stopReasonName(contraction_->stopReason()); }
-    py::array contracted() const { return pointArray(contraction_->contractedPoints()); }
-    py::array workingPoints() const { return pointArray(work_->points()); }
+    py::array contracted() const { return arrayOwning(contraction_->contractedPoints()); }
+    py::array workingPoints() const { return arrayOwning(work_->points()); }
 
     PySkeleton skeleton(const py::object& progress) const {
         return skeletonFrom(withoutGil(progress, [&](const ProgressCallback& callback) {
@@ -522,17 +545,15 @@ PYBIND11_MODULE(_pcskeleton, m) {
                  return s;
              }),
              py::arg("nodes"), py::arg("edges"), py::arg("radii") = py::none(), py::arg("correspondence") = py::none())
-        .def_property_readonly("nodes", [](const PySkeleton& s) { return pointArray(s.graph.nodes); })
-        .def_property_readonly("edges",
-                               [](const PySkeleton& s) { return arrayOwning<Edge, 2>(s.graph.edges, s.graph.edges.size()); })
-        .def_property_readonly("radii",
-                               [](const PySkeleton& s) { return arrayOwning<double, 1>(s.graph.radii, s.graph.radii.size()); })
-        .def_property_readonly("correspondence", [](const PySkeleton& s) {
-            return arrayOwning<int, 1>(s.graph.pointNode, s.graph.pointNode.size());
-        })
-        .def_property_readonly("contracted", [](const PySkeleton& s) -> py::object {
+        .def_property_readonly("nodes", [](py::object self) { return viewOf(self, &SkeletonGraph::nodes); })
+        .def_property_readonly("edges", [](py::object self) { return viewOf(self, &SkeletonGraph::edges); })
+        .def_property_readonly("radii", [](py::object self) { return viewOf(self, &SkeletonGraph::radii); })
+        .def_property_readonly("correspondence",
+                               [](py::object self) { return viewOf(self, &SkeletonGraph::pointNode); })
+        .def_property_readonly("contracted", [](py::object self) -> py::object {
+            const PySkeleton& s = self.cast<const PySkeleton&>();
             if (s.contracted.empty()) return py::none();
-            return pointArray(s.contracted);
+            return readOnlyView(self, s.contracted);
         })
         .def_readonly("report", &PySkeleton::report)
         .def_property_readonly("topology", [](const PySkeleton& s) { return topologyDict(analyseTopology(s.graph)); })
@@ -573,9 +594,7 @@ PYBIND11_MODULE(_pcskeleton, m) {
         for (const ReconstructionWarning& w : r.report.warnings) warnings.append(problemDict(w.problem));
         report["warnings"] = warnings;
         report["text"] = describe(r.report, pythonTerms());
-        const std::size_t triangles = r.mesh.triangles.size();
-        return py::make_tuple(pointArray(std::move(r.mesh.vertices)),
-                              arrayOwning<std::array<int, 3>, 3>(std::move(r.mesh.triangles), triangles), report);
+        return py::make_tuple(arrayOwning(std::move(r.mesh.vertices)), arrayOwning(std::move(r.mesh.triangles)), report);
     });
 
     m.def("read_points", [](const std::string& path) {
@@ -584,7 +603,7 @@ PYBIND11_MODULE(_pcskeleton, m) {
             py::gil_scoped_release released;
             points = readPointCloud(path);
         }
-        return pointArray(std::move(points));
+        return arrayOwning(std::move(points));
     }, py::arg("path"));
     m.def("read_skeleton", [](const std::string& path) {
         PySkeleton s;

@@ -214,10 +214,12 @@ def _to_networkx(self):
 
 def _to_open3d(self):
     """An open3d.geometry.LineSet of the nodes and bones."""
+    import numpy
     import open3d
     lines = open3d.geometry.LineSet()
-    lines.points = open3d.utility.Vector3dVector(self.nodes)
-    lines.lines = open3d.utility.Vector2iVector(self.edges.reshape(-1, 2))
+    # Open3D copies from writable arrays only; the skeleton's views are read-only.
+    lines.points = open3d.utility.Vector3dVector(numpy.array(self.nodes))
+    lines.lines = open3d.utility.Vector2iVector(numpy.array(self.edges).reshape(-1, 2))
     return lines
 
 

@@ -300,3 +300,15 @@ def test_the_readme_example_draws_its_picture(tmp_path):
     run = subprocess.run([sys.executable, example, "", str(picture)], capture_output=True, text=True, cwd=tmp_path)
     assert run.returncode == 0, run.stderr
     assert "Skeleton: " in run.stdout and picture.stat().st_size > 10000
+
+
+def test_skeleton_arrays_are_read_only_views_that_keep_it_alive(torus_points):
+    s = pcskeleton.skeletonize(torus_points)
+    nodes, edges = s.nodes, s.edges
+    assert not nodes.flags.writeable and not edges.flags.writeable
+    with pytest.raises(ValueError):
+        nodes[0, 0] = 5.0
+    assert np.shares_memory(s.nodes, nodes)  # the same storage each time: no copy
+    expected = nodes.copy()
+    del s
+    assert np.array_equal(nodes, expected) and edges.max() < len(nodes)
