@@ -21,6 +21,8 @@ Every length is relative to the cloud's bounding-box diagonal: the same call wor
 millimetres or kilometres.
 """
 
+import textwrap
+
 from . import _pcskeleton
 from ._pcskeleton import Skeleton, SkeletonEditor, read_points, read_skeleton, write_points, write_mesh
 
@@ -93,10 +95,8 @@ _RECONSTRUCTION_HELP = [
 
 
 def _describe(table, defaults):
-    lines = []
-    for name, text in table:
-        lines.append(f"    {name} [{defaults[name]!r}]: {text}")
-    return "\n".join(lines)
+    return "\n".join(textwrap.fill(f"{name} [{defaults[name]!r}]: {text}", width=88, initial_indent="    ",
+                                   subsequent_indent="        ") for name, text in table)
 
 
 def _points_of(points):
