@@ -8,7 +8,13 @@
 // mean and 99th percentile, in % of the diagonal; the share of vertices where data exists;
 // time of the skeleton and of the surface. A summary per condition follows.
 //
-// usage: bench_surface [POINTS] [--resolution R] [--shape TEXT] [--data-topology] [--uniform-point-weights]
+// --poisson measures MeshLab's screened Poisson instead, the reference the reconstruction
+// issue set: bench/scripts/screened_poisson.mlx (normals for the point set from 10
+// neighbours, then depth 8 and every other setting at MeshLab's default) through the
+// system's meshlabserver under xvfb-run; its time includes meshlabserver's start (about
+// 0.5 s). Its surface has no skeleton to follow: the topology columns are left empty.
+//
+// usage: bench_surface [POINTS] [--resolution R] [--shape TEXT] [--data-topology] [--uniform-point-weights] [--poisson]
 //        POINTS per clean sample (default 6000, as bench_robustness), R the grid (128)
 #include "robustness_suite.h"
 #include "run_in_child.h"
@@ -17,13 +23,16 @@
 #include <pcskeleton/curve_skeleton.h>
 #include <pcskeleton/internal/spatial_index.h>
 #include <pcskeleton/internal/stopwatch.h>
+#include <pcskeleton/io/point_cloud_io.h>
 #include <pcskeleton/reconstruction/skeleton_reconstruction.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -43,29 +52,53 @@ struct Row {
     double skeletonSeconds = 0, surfaceSeconds = 0;
 };
 
-Row measure(const Subject& subject, const Condition& condition, std::size_t n, const ReconstructionParameters& parameters) {
+// The vertices of MeshLab's screened Poisson surface of `cloud` (see --poisson above).
+PointList screenedPoissonVertices(const PointList& cloud) {
+    char folder[] = "/tmp/bench_surface_XXXXXX";
+    if (!mkdtemp(folder)) throw std::runtime_error("cannot make a scratch folder");
+    const std::string input = std::string(folder) + "/cloud.ply", output = std::string(folder) + "/poisson.ply";
+    writePointCloud(cloud, input);
+    const std::string command = "xvfb-run -a meshlabserver -i " + input + " -o " + output +
+                                " -s " PCSKELETON_POISSON_SCRIPT " >" + folder + "/log.txt 2>&1";
+    const bool made = std::system(command.c_str()) == 0 && std::filesystem::exists(output);
+    PointList vertices = made ? readPointCloud(output) : PointList{};
+    std::filesystem::remove_all(folder);
+    if (!made) throw std::runtime_error("meshlabserver's screened Poisson failed");
+    return vertices;
+}
+
+Row measure(const Subject& subject, const Condition& condition, std::size_t n, const ReconstructionParameters& parameters,
+            bool poisson) {
     Row row;
     const PointList cloud = condition.make(subject, n, 11);
     const double diagonal = boundingBox(subject.sample(n, 11)).diagonal().norm();
     Stopwatch stage;
-    const SkeletonResult skeleton = computeCurveSkeleton(cloud);
-    row.skeletonSeconds = stage.seconds();
-    const SkeletonTopology expected = analyseTopology(skeleton.skeleton);
-    row.skeletonComponents = expected.components;
-    row.skeletonCycles = expected.cycles;
+    PointList vertices;
+    if (poisson) {
+        vertices = screenedPoissonVertices(cloud);
+        row.surfaceSeconds = stage.seconds();
+        row.skeletonComponents = row.skeletonCycles = row.components = row.genus = -1;
+    } else {
+        const SkeletonResult skeleton = computeCurveSkeleton(cloud);
+        row.skeletonSeconds = stage.seconds();
+        const SkeletonTopology expected = analyseTopology(skeleton.skeleton);
+        row.skeletonComponents = expected.components;
+        row.skeletonCycles = expected.cycles;
 
-    stage.restart();
-    const Reconstruction surface = reconstructFromSkeleton(cloud, skeleton.skeleton, parameters);
-    row.surfaceSeconds = stage.seconds();
-    const SurfaceTopology& t = surface.report.topology;
-    row.components = t.components;
-    row.genus = t.genus;
-    row.topologyKept = t.closedManifold() && t.components == expected.components && t.genus == expected.cycles;
+        stage.restart();
+        Reconstruction surface = reconstructFromSkeleton(cloud, skeleton.skeleton, parameters);
+        row.surfaceSeconds = stage.seconds();
+        const SurfaceTopology& t = surface.report.topology;
+        row.components = t.components;
+        row.genus = t.genus;
+        row.topologyKept = t.closedManifold() && t.components == expected.components && t.genus == expected.cycles;
+        vertices = std::move(surface.mesh.vertices);
+    }
 
     const PointIndex index(cloud);
     std::vector<int> found;
     std::vector<double> distances;
-    for (const Point& v : surface.mesh.vertices) {
+    for (const Point& v : vertices) {
         index.withinRadius(v, 0.01 * diagonal, found);
         if (!found.empty()) distances.push_back(100.0 * subject.surfaceDistance(v) / diagonal);
     }
@@ -76,7 +109,7 @@ Row measure(const Subject& subject, const Condition& condition, std::size_t n, c
         const auto nearlyMax = distances.begin() + std::ptrdiff_t(0.99 * double(distances.size() - 1));
         std::nth_element(distances.begin(), nearlyMax, distances.end());
         row.nearlyMaxDistance = *nearlyMax;
-        row.withData = 100.0 * double(distances.size()) / double(surface.mesh.vertices.size());
+        row.withData = 100.0 * double(distances.size()) / double(vertices.size());
     }
     return row;
 }
@@ -93,24 +126,32 @@ int main(int argc, char** argv) {
     std::size_t n = 6000;
     ReconstructionParameters parameters;
     std::string onlyShape;
+    bool poisson = false;
     for (int a = 1; a < argc; ++a) {
         const std::string arg = argv[a];
         if (arg == "--resolution" && a + 1 < argc) parameters.resolution = std::atoi(argv[++a]);
         else if (arg == "--shape" && a + 1 < argc) onlyShape = argv[++a];
         else if (arg == "--data-topology") parameters.keepSkeletonTopology = false;
         else if (arg == "--uniform-point-weights") parameters.adaptToNoise = false;
+        else if (arg == "--poisson") poisson = true;
         else if (arg.rfind("--", 0) != 0) n = std::strtoull(arg.c_str(), nullptr, 10);
         else {
-            std::fprintf(stderr, "usage: bench_surface [POINTS] [--resolution R] [--shape TEXT] [--data-topology] [--uniform-point-weights]\n");
+            std::fprintf(stderr, "usage: bench_surface [POINTS] [--resolution R] [--shape TEXT] [--data-topology] [--uniform-point-weights] [--poisson]\n");
             return 2;
         }
     }
     const std::vector<Subject> subjects = robustnessSubjects();
-    std::printf("Surface from each scan's own skeleton, resolution %d, %s, %s, %zu points per clean sample, %ld cores.\n"
-                "Distances to the true surface where data exists, in %% of the diagonal.\n",
-                parameters.resolution, parameters.keepSkeletonTopology ? "topology guarantee" : "plain fit",
-                parameters.adaptToNoise ? "noise-adapted point weights" : "uniform point weights", n,
-                sysconf(_SC_NPROCESSORS_ONLN));
+    if (poisson) {
+        std::printf("MeshLab's screened Poisson (depth 8, normals from 10 neighbours), %zu points per clean sample, %ld cores.\n"
+                    "Distances to the true surface where data exists, in %% of the diagonal.\n",
+                    n, sysconf(_SC_NPROCESSORS_ONLN));
+    } else {
+        std::printf("Surface from each scan's own skeleton, resolution %d, %s, %s, %zu points per clean sample, %ld cores.\n"
+                    "Distances to the true surface where data exists, in %% of the diagonal.\n",
+                    parameters.resolution, parameters.keepSkeletonTopology ? "topology guarantee" : "plain fit",
+                    parameters.adaptToNoise ? "noise-adapted point weights" : "uniform point weights", n,
+                    sysconf(_SC_NPROCESSORS_ONLN));
+    }
     std::printf("%-24s %-14s %9s %9s %5s %7s %7s %5s %8s %8s\n", "shape", "condition", "skeleton", "surface", "kept",
                 "mean d", "99% d", "data", "skeleton", "surface");
     std::map<std::string, Tally> byCondition;
@@ -120,14 +161,19 @@ int main(int argc, char** argv) {
             if (std::find(kConditions.begin(), kConditions.end(), condition.name) == kConditions.end()) continue;
             Row row;
             double peak = 0;
-            if (!runInChild([&] { return measure(subject, condition, n, parameters); }, row, peak)) {
+            if (!runInChild([&] { return measure(subject, condition, n, parameters, poisson); }, row, peak)) {
                 std::printf("%-24s %-14s failed\n", subject.name.c_str(), condition.name);
                 continue;
             }
-            std::printf("%-24s %-14s %4d, %2d  %4d, %2d  %5s %7.3f %7.3f %4.0f%% %7.2fs %7.2fs\n", subject.name.c_str(),
-                        condition.name, row.skeletonComponents, row.skeletonCycles, row.components, row.genus,
-                        row.topologyKept ? "yes" : "NO", row.meanDistance, row.nearlyMaxDistance, row.withData,
-                        row.skeletonSeconds, row.surfaceSeconds);
+            if (poisson) {
+                std::printf("%-24s %-14s %9s %9s %5s %7.3f %7.3f %4.0f%% %8s %7.2fs\n", subject.name.c_str(), condition.name,
+                            "-", "-", "-", row.meanDistance, row.nearlyMaxDistance, row.withData, "-", row.surfaceSeconds);
+            } else {
+                std::printf("%-24s %-14s %4d, %2d  %4d, %2d  %5s %7.3f %7.3f %4.0f%% %7.2fs %7.2fs\n", subject.name.c_str(),
+                            condition.name, row.skeletonComponents, row.skeletonCycles, row.components, row.genus,
+                            row.topologyKept ? "yes" : "NO", row.meanDistance, row.nearlyMaxDistance, row.withData,
+                            row.skeletonSeconds, row.surfaceSeconds);
+            }
             std::fflush(stdout);
             Tally& t = byCondition[condition.name];
             ++t.cases;
@@ -141,7 +187,8 @@ int main(int argc, char** argv) {
     for (const std::string& name : kConditions) {
         const Tally& t = byCondition[name];
         if (t.cases == 0) continue;
-        std::printf("%-14s %11d/%-3d %8.3f %9.2fs %9.2fs\n", name.c_str(), t.kept, t.cases,
+        const std::string kept = poisson ? "-" : std::to_string(t.kept) + "/" + std::to_string(t.cases);
+        std::printf("%-14s %15s %8.3f %9.2fs %9.2fs\n", name.c_str(), kept.c_str(),
                     t.measured ? t.meanDistance / t.measured : -1.0, t.skeletonSeconds / t.cases, t.surfaceSeconds / t.cases);
     }
     return 0;
