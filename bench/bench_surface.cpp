@@ -15,6 +15,7 @@
 // 0.5 s). Its surface has no skeleton to follow: the topology columns are left empty.
 //
 // usage: bench_surface [POINTS] [--resolution R] [--shape TEXT] [--data-topology] [--uniform-point-weights] [--poisson]
+//                      [--surface-weight W2] [--smooth-weight W1]
 //        POINTS per clean sample (default 6000, as bench_robustness), R the grid (128)
 #include "robustness_suite.h"
 #include "run_in_child.h"
@@ -134,9 +135,12 @@ int main(int argc, char** argv) {
         else if (arg == "--data-topology") parameters.keepSkeletonTopology = false;
         else if (arg == "--uniform-point-weights") parameters.adaptToNoise = false;
         else if (arg == "--poisson") poisson = true;
+        else if (arg == "--surface-weight" && a + 1 < argc) parameters.surfaceWeight = std::atof(argv[++a]);
+        else if (arg == "--smooth-weight" && a + 1 < argc) parameters.smoothWeight = std::atof(argv[++a]);
         else if (arg.rfind("--", 0) != 0) n = std::strtoull(arg.c_str(), nullptr, 10);
         else {
-            std::fprintf(stderr, "usage: bench_surface [POINTS] [--resolution R] [--shape TEXT] [--data-topology] [--uniform-point-weights] [--poisson]\n");
+            std::fprintf(stderr, "usage: bench_surface [POINTS] [--resolution R] [--shape TEXT] [--data-topology] [--uniform-point-weights] [--poisson]\n"
+                                 "       [--surface-weight W2] [--smooth-weight W1]\n");
             return 2;
         }
     }
