@@ -521,6 +521,7 @@ private:
 PYBIND11_MODULE(_pcskeleton, m) {
     m.doc() = "Curve skeletons of point clouds by Laplacian-based contraction (Cao et al., SMI 2010): "
               "the compiled core of the pcskeleton package.";
+    m.attr("__version__") = PCSKELETON_VERSION;
 
     // The library's refusals are the user's input: ValueError with the library's message.
     // A broken precondition is a bug: RuntimeError naming it as such.

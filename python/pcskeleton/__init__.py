@@ -24,6 +24,7 @@ millimetres or kilometres.
 import textwrap
 
 from . import _pcskeleton
+from ._pcskeleton import __version__
 from ._pcskeleton import Skeleton, SkeletonEditor, read_points, read_skeleton, write_points, write_mesh
 
 __all__ = [

@@ -73,6 +73,10 @@ def test_input_array_is_not_modified(torus_points):
 
 # ---- Parameters ----------------------------------------------------------------------------
 
+def test_version_is_the_projects():
+    assert pcskeleton.__version__.count(".") == 2 and all(part.isdigit() for part in pcskeleton.__version__.split("."))
+
+
 def test_every_keyword_is_documented_with_its_default():
     for name, value in pcskeleton.SKELETON_PARAMETERS.items():
         assert f"{name} [{value!r}]" in pcskeleton.skeletonize.__doc__
