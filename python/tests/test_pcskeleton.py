@@ -274,8 +274,9 @@ def test_the_gil_is_released_during_the_work():
         time.sleep(0.001)
     worker.join()
     elapsed = time.monotonic() - start
-    # Held GIL: the loop would run only between progress reports (a handful of ticks).
-    assert ticks > 0.2 * elapsed / 0.001, (ticks, elapsed)
+    # Held GIL: the loop would run only between progress reports (a handful of ticks);
+    # released, it ticks about once a millisecond (a tenth of that on a loaded machine).
+    assert ticks > 0.1 * elapsed / 0.001, (ticks, elapsed)
 
 
 def resident_megabytes():
