@@ -356,8 +356,7 @@ bool parseArguments(int argc, char** argv, Options& options) {
             options.reconstruction.adaptToNoise = false;
         } else if (arg == "--paper") {
             options.parameters.keepToThePaper();
-            options.reconstruction.keepSkeletonTopology = false;
-            options.reconstruction.adaptToNoise = false;
+            options.reconstruction.keepToThePaper();
         } else if (auto option = withValue.find(arg); option != withValue.end()) {
             if (i + 1 >= argc) throw UsageError(arg + " needs a value");
             option->second(argv[++i]);

@@ -15,6 +15,7 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <functional>
@@ -210,8 +211,7 @@ Settings settingsFrom(const py::dict& kwargs, const std::map<std::string, Keywor
     Settings s;
     if (kwargs.contains("paper") && kwargs["paper"].cast<bool>()) {
         s.skeleton.keepToThePaper();
-        s.reconstruction.keepSkeletonTopology = false;
-        s.reconstruction.adaptToNoise = false;
+        s.reconstruction.keepToThePaper();
     }
     for (const auto& [key, value] : kwargs) {
         const std::string name = key.cast<std::string>();
@@ -248,6 +248,18 @@ PointList pointsFrom(const DoubleArray& array, const char* what) {
     PointList points(std::size_t(array.shape(0)));
     if (!points.empty()) std::memcpy(points.data()->data(), array.data(), points.size() * 3 * sizeof(double));
     return points;
+}
+
+// Rows of `columns` indices, e.g. edges (e, 2) or faces (f, 3); an empty array is no rows.
+template <std::size_t columns>
+std::vector<std::array<int, columns>> indexRowsFrom(const IntArray& array, const char* what) {
+    std::vector<std::array<int, columns>> rows;
+    if (array.size() == 0) return rows;
+    if (array.ndim() != 2 || array.shape(1) != py::ssize_t(columns))
+        throw InvalidInput(std::string(what) + " must be an array of shape (n, " + std::to_string(columns) + ").");
+    rows.resize(std::size_t(array.shape(0)));
+    std::memcpy(rows.data()->data(), array.data(), rows.size() * columns * sizeof(int));
+    return rows;
 }
 
 // A vector of points, index pairs or triples, or numbers, seen by numpy as rows of scalars.
@@ -287,12 +299,11 @@ public:
         if (callback_.is_none()) return {};
         return [this](int percent, const char* what) {
             py::gil_scoped_acquire gil;
-            if (failed_) return;
+            if (error_) return;
             try {
                 callback_(percent, what);
             } catch (py::error_already_set& e) {
                 error_ = std::make_unique<py::error_already_set>(std::move(e));
-                failed_ = true;
             }
         };
     }
@@ -302,7 +313,6 @@ public:
 
 private:
     py::object callback_;
-    bool failed_ = false;
     std::unique_ptr<py::error_already_set> error_;
 };
 
@@ -421,15 +431,13 @@ PySkeleton skeletonFrom(SkeletonResult result) {
     return s;
 }
 
-// A skeleton built from arrays (a user's own, or one changed in numpy) is checked as the
-// readers check a file.
+// A skeleton built from arrays (a user's own, or one changed in numpy) must satisfy the
+// graph's invariants (invariantViolation), as the editor requires.
 SkeletonGraph graphFromArrays(const DoubleArray& nodes, const IntArray& edges, const py::object& radii,
                               const py::object& correspondence) {
     SkeletonGraph g;
     g.nodes = pointsFrom(nodes, "nodes");
-    if (edges.size() > 0 && (edges.ndim() != 2 || edges.shape(1) != 2))
-        throw InvalidInput("edges must be an array of shape (e, 2).");
-    for (py::ssize_t e = 0; e < (edges.size() ? edges.shape(0) : 0); ++e) g.edges.push_back({edges.at(e, 0), edges.at(e, 1)});
+    g.edges = indexRowsFrom<2>(edges, "edges");
     if (!radii.is_none()) {
         const DoubleArray r = radii.cast<DoubleArray>();
         g.radii.assign(r.data(), r.data() + r.size());
@@ -438,8 +446,8 @@ SkeletonGraph graphFromArrays(const DoubleArray& nodes, const IntArray& edges, c
         const IntArray c = correspondence.cast<IntArray>();
         g.pointNode.assign(c.data(), c.data() + c.size());
     }
-    // Without radii (as from an .obj file) the graph is checked first, then its radii are
-    // estimated from the bones as the readers do.
+    // Without radii the graph is checked first (with stand-in radii), then its radii are
+    // estimated from the bones, as MeshLab's filters and Edit Skeleton do (fillMissingRadii).
     const bool estimateRadii = g.radii.empty();
     if (estimateRadii) g.radii.assign(g.nodes.size(), 1.0);
     normalizeEdges(g.edges);
@@ -501,21 +509,6 @@ private:
     std::unique_ptr<LaplacianContraction> contraction_;
 };
 
-// Runs `f` on the editor and turns a refused edit into ValueError with the editor's words.
-class PyEditor {
-public:
-    explicit PyEditor(const PySkeleton& s) : editor_(s.graph) {}
-    SkeletonEditor& editor() { return editor_; }
-    PySkeleton skeleton() const {
-        PySkeleton s;
-        s.graph = editor_.skeleton();
-        return s;
-    }
-
-private:
-    SkeletonEditor editor_;
-};
-
 }  // namespace
 
 PYBIND11_MODULE(_pcskeleton, m) {
@@ -571,7 +564,7 @@ PYBIND11_MODULE(_pcskeleton, m) {
 
     py::class_<PyContraction>(m, "_Contraction")
         .def(py::init<const DoubleArray&, const py::dict&, const py::object&>())
-        .def("iterate", &PyContraction::iterate)
+        .def("iterate", &PyContraction::iterate, "One iteration; returns its report (a dict). Does nothing once finished.")
         .def_property_readonly("finished", &PyContraction::finished)
         .def_property_readonly("stop_reason", &PyContraction::stopReason)
         .def_property_readonly("contracted", &PyContraction::contracted)
@@ -617,41 +610,37 @@ PYBIND11_MODULE(_pcskeleton, m) {
     m.def("write_mesh", [](const DoubleArray& vertices, const IntArray& faces, const std::string& path) {
         TriangleMesh mesh;
         mesh.vertices = pointsFrom(vertices, "vertices");
-        if (faces.size() > 0 && (faces.ndim() != 2 || faces.shape(1) != 3))
-            throw InvalidInput("faces must be an array of shape (f, 3).");
-        for (py::ssize_t f = 0; f < (faces.size() ? faces.shape(0) : 0); ++f) {
-            std::array<int, 3> t{faces.at(f, 0), faces.at(f, 1), faces.at(f, 2)};
-            for (int v : t)
+        mesh.triangles = indexRowsFrom<3>(faces, "faces");
+        for (const auto& triangle : mesh.triangles)
+            for (int v : triangle)
                 if (v < 0 || std::size_t(v) >= mesh.vertices.size())
                     throw InvalidInput("faces: vertex index " + std::to_string(v) + " out of range.");
-            mesh.triangles.push_back(t);
-        }
         writeTriangleMesh(mesh, path);
     }, py::arg("vertices"), py::arg("faces"), py::arg("path"));
 
-    py::class_<PyEditor>(m, "SkeletonEditor")
-        .def(py::init<const PySkeleton&>(), py::arg("skeleton"))
-        .def_property_readonly("skeleton", &PyEditor::skeleton)
-        .def("move_nodes", [](PyEditor& e, const std::vector<int>& nodes, const std::array<double, 3>& offset) {
-            e.editor().moveNodes(nodes, Point(offset[0], offset[1], offset[2]));
+    // Refused edits throw InvalidInput: ValueError, as everywhere.
+    py::class_<SkeletonEditor>(m, "SkeletonEditor")
+        .def(py::init([](const PySkeleton& s) { return std::make_unique<SkeletonEditor>(s.graph); }), py::arg("skeleton"))
+        .def_property_readonly("skeleton",
+                               [](const SkeletonEditor& e) {
+                                   PySkeleton s;
+                                   s.graph = e.skeleton();
+                                   return s;
+                               })
+        .def("move_nodes", [](SkeletonEditor& e, const std::vector<int>& nodes, const std::array<double, 3>& offset) {
+            e.moveNodes(nodes, Point(offset[0], offset[1], offset[2]));
         }, py::arg("nodes"), py::arg("offset"))
-        .def("delete_nodes", [](PyEditor& e, const std::vector<int>& nodes) { e.editor().deleteNodes(nodes); },
-             py::arg("nodes"))
-        .def("delete_edge", [](PyEditor& e, int a, int b) { e.editor().deleteEdge(a, b); }, py::arg("a"), py::arg("b"))
-        .def("connect", [](PyEditor& e, int a, int b) { e.editor().connect(a, b); }, py::arg("a"), py::arg("b"))
-        .def("merge_nodes", [](PyEditor& e, const std::vector<int>& nodes) { return e.editor().mergeNodes(nodes); },
-             py::arg("nodes"))
-        .def("split_edge", [](PyEditor& e, int a, int b, double at) { return e.editor().splitEdge(a, b, at); },
-             py::arg("a"), py::arg("b"), py::arg("at") = 0.5)
-        .def("set_radius", [](PyEditor& e, const std::vector<int>& nodes, double r) { e.editor().setRadius(nodes, r); },
-             py::arg("nodes"), py::arg("radius"))
-        .def("scale_radius",
-             [](PyEditor& e, const std::vector<int>& nodes, double f) { e.editor().scaleRadius(nodes, f); },
-             py::arg("nodes"), py::arg("factor"))
-        .def_property_readonly("can_undo", [](PyEditor& e) { return e.editor().canUndo(); })
-        .def_property_readonly("can_redo", [](PyEditor& e) { return e.editor().canRedo(); })
-        .def_property_readonly("undo_text", [](PyEditor& e) { return e.editor().undoText(); })
-        .def_property_readonly("redo_text", [](PyEditor& e) { return e.editor().redoText(); })
-        .def("undo", [](PyEditor& e) { e.editor().undo(); })
-        .def("redo", [](PyEditor& e) { e.editor().redo(); });
+        .def("delete_nodes", &SkeletonEditor::deleteNodes, py::arg("nodes"))
+        .def("delete_edge", &SkeletonEditor::deleteEdge, py::arg("a"), py::arg("b"))
+        .def("connect", &SkeletonEditor::connect, py::arg("a"), py::arg("b"))
+        .def("merge_nodes", &SkeletonEditor::mergeNodes, py::arg("nodes"))
+        .def("split_edge", &SkeletonEditor::splitEdge, py::arg("a"), py::arg("b"), py::arg("at") = 0.5)
+        .def("set_radius", &SkeletonEditor::setRadius, py::arg("nodes"), py::arg("radius"))
+        .def("scale_radius", &SkeletonEditor::scaleRadius, py::arg("nodes"), py::arg("factor"))
+        .def_property_readonly("can_undo", &SkeletonEditor::canUndo)
+        .def_property_readonly("can_redo", &SkeletonEditor::canRedo)
+        .def_property_readonly("undo_text", &SkeletonEditor::undoText)
+        .def_property_readonly("redo_text", &SkeletonEditor::redoText)
+        .def("undo", &SkeletonEditor::undo)
+        .def("redo", &SkeletonEditor::redo);
 }

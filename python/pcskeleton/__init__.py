@@ -133,7 +133,7 @@ skeletonize.__doc__ = f"""The curve skeleton of a point cloud: contraction, thin
     """
 
 
-class Contraction:
+class Contraction(_pcskeleton._Contraction):
     """The contraction step by step (paper steps 1-3), to watch or stop it early.
 
         c = Contraction(points, iterations=20)
@@ -144,38 +144,18 @@ class Contraction:
     Keywords as skeletonize's (thinning's are kept for skeleton_from_contraction). Above
     contracted_points points, a spread subsample is contracted: `points` is what is
     contracted (the subsample, or every point) and `contracted` where it went, same order.
+    `stop_reason` is 'not_stopped', 'converged', 'iteration_limit' or 'numerical_failure'.
     """
 
     def __init__(self, points, *, progress=None, **parameters):
-        self._core = _pcskeleton._Contraction(_points_of(points), parameters, progress)
-
-    def iterate(self):
-        """One iteration; returns its report (a dict). Does nothing once finished."""
-        return self._core.iterate()
-
-    @property
-    def finished(self):
-        return self._core.finished
-
-    @property
-    def stop_reason(self):
-        """'not_stopped', 'converged', 'iteration_limit' or 'numerical_failure'."""
-        return self._core.stop_reason
-
-    @property
-    def points(self):
-        return self._core.points
-
-    @property
-    def contracted(self):
-        return self._core.contracted
+        super().__init__(_points_of(points), parameters, progress)
 
 
 def skeleton_from_contraction(contraction, *, progress=None):
     """Thinning and embedding (paper steps 4-5) of a Contraction's current state, then the
     steps after them, with the keywords the Contraction was given. Every input point gets
     its node, also through a subsample."""
-    return contraction._core._skeleton(progress)
+    return contraction._skeleton(progress)
 
 
 def reconstruct(points, skeleton, *, progress=None, **parameters):

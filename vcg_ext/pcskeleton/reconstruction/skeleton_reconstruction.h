@@ -44,6 +44,12 @@ struct ReconstructionParameters {
     // from 1.68% to 1.13% of the diagonal, with 1% from 0.43% to 0.40%; clean, scanned
     // and misaligned cases and every topology are unchanged.
     bool adaptToNoise = true;
+
+    // The paper's plain fit: no topology guarantee, every point weighing w2.
+    void keepToThePaper() {
+        keepSkeletonTopology = false;
+        adaptToNoise = false;
+    }
 };
 
 constexpr int kMinimumResolution = 16;
