@@ -25,6 +25,8 @@
 //                                       the default pipeline without the stretched-link limit
 //        bench_robustness [POINTS] --gap-limit X
 //                                       gaps in the data bridged up to X node spacings (0: none)
+//        bench_robustness [POINTS] --loop-opening X | --loop-clearance F
+//                                       refinement's narrow-loop limits (opening 0: no cut)
 //        bench_robustness [POINTS] --full-resolution | --contracted-points N
 //                                       every point contracted, or at most N (the
 //                                       multi-resolution pipeline's subsample; default 20000)
@@ -216,7 +218,8 @@ int outlierDetection(const std::vector<Subject>& subjects, std::size_t n, const 
 
 const char* const kUsage =
     "usage: bench_robustness [POINTS] [--paper] [--no-refine] [--no-recentre] [--extend-tips] [--no-link-limit]\n"
-    "                        [--gap-limit X] [--full-resolution] [--contracted-points N] [--shape TEXT]\n"
+    "                        [--gap-limit X] [--loop-opening X] [--loop-clearance F] [--full-resolution]\n"
+    "                        [--contracted-points N] [--shape TEXT]\n"
     "       bench_robustness --outliers [POINTS [ISOLATION [CLUSTER [LOCAL]]]]\n"
     "       bench_robustness --write SHAPE CONDITION FILE [POINTS]\n"
     "The table of every shape under every scan defect (the default), the outlier detector's scores, or one\n"
@@ -228,7 +231,8 @@ int main(int argc, char** argv) {
     const std::set<std::string> flags{"--paper",         "--no-refine",         "--no-recentre",
                                       "--extend-tips",   "--no-link-limit",     "--full-resolution",
                                       "--outliers",      "--write",             "--contracted-points",
-                                      "--shape",         "--gap-limit"};
+                                      "--shape",         "--gap-limit",         "--loop-opening",
+                                      "--loop-clearance"};
     for (const std::string& arg : args) {
         if (arg == "--help" || arg == "-h") {
             std::printf("%s", kUsage);
@@ -245,7 +249,9 @@ int main(int argc, char** argv) {
     std::size_t n = 6000;
     std::vector<double> numbers;
     for (std::size_t a = write ? 4 : 0; a < args.size(); ++a) {
-        if (args[a] == "--contracted-points" || args[a] == "--shape" || args[a] == "--gap-limit") ++a;  // not a size
+        if (args[a] == "--contracted-points" || args[a] == "--shape" || args[a] == "--gap-limit" ||
+            args[a] == "--loop-opening" || args[a] == "--loop-clearance")
+            ++a;  // not a size
         else if (args[a].rfind("--", 0) != 0) numbers.push_back(std::atof(args[a].c_str()));
     }
     if (!numbers.empty()) n = std::size_t(numbers[0]);
@@ -254,8 +260,13 @@ int main(int argc, char** argv) {
     if (std::find(args.begin(), args.end(), "--no-recentre") != args.end()) pipeline.thinning.recentre = false;
     if (std::find(args.begin(), args.end(), "--extend-tips") != args.end()) pipeline.thinning.extendTips = true;
     if (std::find(args.begin(), args.end(), "--no-link-limit") != args.end()) pipeline.thinning.linkLimit = 0;
-    const auto gapLimit = std::find(args.begin(), args.end(), "--gap-limit");
-    if (gapLimit != args.end() && gapLimit + 1 != args.end()) pipeline.thinning.gapLimit = std::atof((gapLimit + 1)->c_str());
+    const auto numberAfter = [&](const char* option, double& value) {
+        const auto found = std::find(args.begin(), args.end(), option);
+        if (found != args.end() && found + 1 != args.end()) value = std::atof((found + 1)->c_str());
+    };
+    numberAfter("--gap-limit", pipeline.thinning.gapLimit);
+    numberAfter("--loop-opening", pipeline.thinning.narrowLoops.minOpening);
+    numberAfter("--loop-clearance", pipeline.thinning.narrowLoops.minClearance);
     if (std::find(args.begin(), args.end(), "--full-resolution") != args.end()) pipeline.resolution.maxContractedPoints = 0;
     // --shape TEXT: only the shapes whose name contains TEXT (e.g. the slow ones at 1M points).
     const auto shapeFilter = std::find(args.begin(), args.end(), "--shape");

@@ -62,6 +62,8 @@ std::string optionOf(Parameter parameter) {
         case Parameter::DenoisingPasses: return "--denoise";
         case Parameter::LinkLimit: return "--link-limit";
         case Parameter::GapLimit: return "--gap-limit";
+        case Parameter::LoopOpening: return "--loop-opening";
+        case Parameter::LoopClearance: return "--loop-clearance";
         case Parameter::ContractedPoints: return "--contracted-points (without --full-resolution)";
         case Parameter::Resolution: return "--resolution";
         case Parameter::SmoothWeight: return "--smooth-weight";
@@ -177,8 +179,14 @@ void printHelp() {
         "                        its tip's points, since contraction shortens limbs\n"
         "  --no-refine           keep short spurs and loops smaller than their tube, and\n"
         "                        junctions closer than the node spacing; by default they are\n"
-        "                        removed or merged (noise and misaligned scans leave them).\n"
-        "                        --refine turns it on again after --paper.\n"
+        "                        removed or merged, and loops narrower than their tube where\n"
+        "                        parts touch are opened (noise and misaligned scans leave\n"
+        "                        them). --refine turns it on again after --paper.\n"
+        "  --loop-opening X      refinement opens a loop whose hole is narrower than X tube\n"
+        "                        radii [%g] at its bone longest for its radii, if that bone\n"
+        "  --loop-clearance F    passes closer than F of its radius to a point [%g]: parts\n"
+        "                        that touch or that noise joined. Lower either if a real\n"
+        "                        narrow hole is lost; --loop-opening 0 opens none\n"
         "  --no-recentre         leave every node at the centre of its points; by default a\n"
         "                        node whose points cover one side of its bone only (one-view\n"
         "                        scans, holes) moves to the centre of the circle through them\n"
@@ -226,7 +234,7 @@ void printHelp() {
         r.resolution, r.smoothWeight, r.surfaceWeight, r.skeletonWeight, r.outsideWeight, r.outsideRadii,
         c.neighbourCount, c.initialContractionWeight, c.initialAttractionWeight, c.contractionScale,
         c.maxContractionWeight, c.maxAttractionWeight, c.laplacianRowLimit, c.maxIterations, c.terminationThreshold,
-        t.sampleRadius, t.linkLimit, t.gapLimit, o.isolationFactor, o.localFactor, o.clusterShare, c.denoisingPasses,
+        t.sampleRadius, t.linkLimit, t.gapLimit, t.narrowLoops.minOpening, t.narrowLoops.minClearance, o.isolationFactor, o.localFactor, o.clusterShare, c.denoisingPasses,
         kPassesForNoisySurface, kNoisySurface, kMaximumDenoisingPasses, m.maxContractedPoints);
 }
 
@@ -318,6 +326,8 @@ bool parseArguments(int argc, char** argv, Options& options) {
         {"--radius", [&](const std::string& v) { options.parameters.thinning.sampleRadius = parseNumber("--radius", v); }},
         {"--link-limit", [&](const std::string& v) { options.parameters.thinning.linkLimit = parseNumber("--link-limit", v); }},
         {"--gap-limit", [&](const std::string& v) { options.parameters.thinning.gapLimit = parseNumber("--gap-limit", v); }},
+        {"--loop-opening", [&](const std::string& v) { options.parameters.thinning.narrowLoops.minOpening = parseNumber("--loop-opening", v); }},
+        {"--loop-clearance", [&](const std::string& v) { options.parameters.thinning.narrowLoops.minClearance = parseNumber("--loop-clearance", v); }},
         {"--outlier-isolation", [&](const std::string& v) { c.outliers.isolationFactor = parseNumber("--outlier-isolation", v); }},
         {"--outlier-local", [&](const std::string& v) { c.outliers.localFactor = parseNumber("--outlier-local", v); }},
         {"--outlier-cluster", [&](const std::string& v) { c.outliers.clusterShare = parseNumber("--outlier-cluster", v); }},

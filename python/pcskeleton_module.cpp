@@ -54,6 +54,8 @@ std::string keywordOf(Parameter parameter) {
         case Parameter::DenoisingPasses: return "denoise";
         case Parameter::LinkLimit: return "link_limit";
         case Parameter::GapLimit: return "gap_limit";
+        case Parameter::LoopOpening: return "loop_opening";
+        case Parameter::LoopClearance: return "loop_clearance";
         case Parameter::ContractedPoints: return "contracted_points";
         case Parameter::Resolution: return "resolution";
         case Parameter::SmoothWeight: return "smooth_weight";
@@ -159,6 +161,10 @@ const std::map<std::string, Keyword>& skeletonKeywords() {
         {"radius", field<double>([](Settings& s) -> double& { return s.skeleton.thinning.sampleRadius; })},
         {"link_limit", field<double>([](Settings& s) -> double& { return s.skeleton.thinning.linkLimit; })},
         {"gap_limit", field<double>([](Settings& s) -> double& { return s.skeleton.thinning.gapLimit; })},
+        {"loop_opening",
+         field<double>([](Settings& s) -> double& { return s.skeleton.thinning.narrowLoops.minOpening; })},
+        {"loop_clearance",
+         field<double>([](Settings& s) -> double& { return s.skeleton.thinning.narrowLoops.minClearance; })},
         {"extend_tips", field<bool>([](Settings& s) -> bool& { return s.skeleton.thinning.extendTips; })},
         {"refine", field<bool>([](Settings& s) -> bool& { return s.skeleton.thinning.refine; })},
         {"recentre", field<bool>([](Settings& s) -> bool& { return s.skeleton.thinning.recentre; })},

@@ -64,7 +64,12 @@ _SKELETON_HELP = [
                   "ahead (a gap in the data) is joined to it; 0 = no bridge (the paper)."),
     ("extend_tips", "extend each limb to the end of its tip's points (contraction shortens limbs)."),
     ("refine", "remove short spurs and loops smaller than their tube, merge junctions closer "
-               "than the node spacing (noise and misaligned scans leave them)."),
+               "than the node spacing, open loops narrower than their tube where parts touch "
+               "(noise and misaligned scans leave them)."),
+    ("loop_opening", "refinement opens a loop whose hole is narrower than this many tube radii at "
+                     "its bone longest for its radii, if that bone passes closer than "
+                     "loop_clearance of its radius to a point (parts that touch); 0 opens none."),
+    ("loop_clearance", "see loop_opening; lower either if a real narrow hole is lost."),
     ("recentre", "move a node whose points cover one side of its bone only (one-view scans, "
                  "holes) to the centre of the circle through them."),
     ("keep_outliers", "contract every point; by default points that do not belong to the sampled "

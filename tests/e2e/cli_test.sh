@@ -126,7 +126,7 @@ grep -q "^Gaps in the data: off.$" gapped_paper.txt || fail "--gap-limit 0 still
 # --help documents every option with its default.
 "$PCSKELETON" --help >help.txt
 for option in --contracted --correspondence --k --wl --wh --sl --max-wl --max-wh --row-limit --iterations \
-              --threshold --radius --link-limit --gap-limit --uniform-point-weights --no-extend-tips --refine --no-refine --no-recentre --keep-outliers --outlier-isolation \
+              --threshold --radius --link-limit --gap-limit --loop-opening --loop-clearance --uniform-point-weights --no-extend-tips --refine --no-refine --no-recentre --keep-outliers --outlier-isolation \
               --outlier-local --outlier-cluster --denoise --contracted-points --full-resolution --memory-limit \
               --paper --report --force --quiet; do
   grep -q -- "$option" help.txt || fail "--help does not document $option"
@@ -137,6 +137,8 @@ grep -q "apart were pulled to different bones" help.txt && grep -q "\[4\]" help.
 grep -q "points \[15000\]" help.txt || fail "--help does not give the --contracted-points default"
 grep -q "ahead (a gap in the data" help.txt && grep -q "a bone joins them \[8\]" help.txt \
   || fail "--help does not explain --gap-limit with its default"
+grep -q "narrower than X tube" help.txt && grep -q "radii \[1\] at its bone" help.txt && grep -q "of its radius to a point \[0.35\]" help.txt \
+  || fail "--help does not explain --loop-opening and --loop-clearance with their defaults"
 
 # Bad input: non-zero exit and a one-line reason; nothing written.
 expect_error() {  # exit code, text in the message, arguments...

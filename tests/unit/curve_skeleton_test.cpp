@@ -1,6 +1,7 @@
 // Known-answer tests of the whole pipeline (contraction, thinning, embedding, tip
 // extension) on tubes along known curves.
 #include <pcskeleton/curve_skeleton.h>
+#include <pcskeleton/io/point_cloud_io.h>
 #include "support/sampled_shapes.h"
 
 #include <gtest/gtest.h>
@@ -177,6 +178,32 @@ TEST(CurveSkeleton, SamplingRadiusMustBeAFraction) {
     EXPECT_THROW(computeCurveSkeleton(shapes::sphere(500, 1.0), p), InvalidInput);
     p.thinning.sampleRadius = 1.5;
     EXPECT_THROW(computeCurveSkeleton(shapes::sphere(500, 1.0), p), InvalidInput);
+}
+
+// bench_robustness's three rings (genus 3) with 1% noise, as `--write` saves it: noise
+// joins two rings across their narrow gap, a loop the refinement opens.
+TEST(CurveSkeleton, NoisyThreeRingsKeepTheirThreeLoopsOnly) {
+    const PointList scan = readPointCloud(std::string(PCSKELETON_SCANS_DIR) + "/three_rings_noise1_6000.ply");
+    const SkeletonResult r = computeCurveSkeleton(scan);
+    EXPECT_EQ(r.quality.topology.cycles, 3) << describe(r.quality.topology);
+    EXPECT_EQ(r.quality.topology.components, 1) << describe(r.quality.topology);
+    EXPECT_EQ(r.quality.refinement.cyclesCut, 1) << describe(r.quality.refinement);
+
+    SkeletonParameters keepEveryLoop;
+    keepEveryLoop.thinning.narrowLoops.minOpening = 0;
+    EXPECT_EQ(computeCurveSkeleton(scan, keepEveryLoop).quality.topology.cycles, 4);
+}
+
+TEST(CurveSkeleton, NarrowLoopLimitsMustBeInRange) {
+    const PointList cloud = shapes::sphere(500, 1.0);
+    SkeletonParameters p;
+    p.thinning.narrowLoops.minOpening = -1;
+    EXPECT_THROW(computeCurveSkeleton(cloud, p), InvalidInput);
+    p.thinning.narrowLoops.minOpening = std::nan("");
+    EXPECT_THROW(computeCurveSkeleton(cloud, p), InvalidInput);
+    p = SkeletonParameters();
+    p.thinning.narrowLoops.minClearance = 1.5;
+    EXPECT_THROW(computeCurveSkeleton(cloud, p), InvalidInput);
 }
 
 TEST(CurveSkeleton, ContractedPointsMustMatchTheInput) {

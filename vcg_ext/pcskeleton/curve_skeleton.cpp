@@ -83,7 +83,7 @@ void thinAndEmbed(const NormalizedCloud& cloud, const OneRings& rings, const Poi
     if (parameters.recentre) recentering = recentreOneSidedNodes(result.skeleton, points);
     RefinementReport refinement;
     if (parameters.refine) {
-        refinement = refineSkeleton(result.skeleton, points, nodeSpacing);
+        refinement = refineSkeleton(result.skeleton, points, nodeSpacing, parameters.narrowLoops);
         for (int& node : recentering.nodes) node = refinement.nodeMap[node];
         std::sort(recentering.nodes.begin(), recentering.nodes.end());
         recentering.nodes.erase(std::unique(recentering.nodes.begin(), recentering.nodes.end()), recentering.nodes.end());
@@ -124,6 +124,14 @@ void checkThinningParameters(const ThinningParameters& parameters) {
     if (!(parameters.gapLimit >= 0.0 && std::isfinite(parameters.gapLimit))) {
         throw InvalidInput(Problem::aboutParameter(
             Parameter::GapLimit, "must be 0 (no bridge, the paper's skeleton) or a positive number of node spacings."));
+    }
+    if (!(parameters.narrowLoops.minOpening >= 0.0 && std::isfinite(parameters.narrowLoops.minOpening))) {
+        throw InvalidInput(Problem::aboutParameter(
+            Parameter::LoopOpening, "must be 0 (no loop is opened) or a positive number of tube radii."));
+    }
+    if (!(parameters.narrowLoops.minClearance >= 0.0 && parameters.narrowLoops.minClearance <= 1.0)) {
+        throw InvalidInput(Problem::aboutParameter(
+            Parameter::LoopClearance, "must be a fraction of a bone's radius between 0 and 1."));
     }
     if (!(parameters.sampleRadius > 0.0 && parameters.sampleRadius < 1.0)) {
         std::ostringstream requirement;

@@ -12,6 +12,7 @@
 #include "pcskeleton/contraction/point_subsampling.h"
 #include "pcskeleton/skeleton/skeleton_graph.h"
 #include "pcskeleton/analysis/skeleton_quality.h"
+#include "pcskeleton/analysis/skeleton_refinement.h"
 
 namespace pcskeleton {
 
@@ -37,6 +38,9 @@ struct ThinningParameters {
     // --no-refine against the default) it turns 6 wrong topologies of 132 right (spurs from
     // misaligned and one-view scans) and none wrong.
     bool refine = true;
+    // Part of refinement: a loop narrower than its tube whose most stretched bone passes
+    // through the surface is opened there (parts that touch, noise across a narrow gap).
+    NarrowLoopLimits narrowLoops;
     // Move nodes whose points cover one side of their bone only (one-view scans, holes) to
     // the centre of the circle through those points (node_recentering.h).
     bool recentre = true;

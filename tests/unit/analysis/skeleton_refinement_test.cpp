@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 using namespace pcskeleton;
 using namespace pcskeleton::graphs;
 
@@ -52,4 +54,77 @@ TEST(SkeletonRefinement, LeavesACleanSkeletonAlone) {
     const SkeletonGraph before = ring;
     EXPECT_FALSE(refineSkeleton(ring, {}, kSpacing).changedAnything());
     EXPECT_EQ(ring.edges, before.edges);
+}
+
+namespace {
+
+// Eight nodes of radius 0.1 on a circle of radius 0.18 (an opening of 0.08, narrower than
+// the tube) with a wide step between nodes 0 and 1: their balls just touch.
+SkeletonGraph narrowLoop() {
+    SkeletonGraph g;
+    const double pi = std::acos(-1.0), wide = 2 * std::asin(0.1 / 0.18), narrow = (2 * pi - wide) / 7;
+    for (int i = 0; i < 8; ++i) {
+        const double angle = i == 0 ? 0.0 : wide + (i - 1) * narrow;
+        g.nodes.emplace_back(0.18 * std::cos(angle), 0.18 * std::sin(angle), 0.0);
+        g.radii.push_back(0.1);
+        g.edges.push_back({i, (i + 1) % 8});
+    }
+    normalizeEdges(g.edges);
+    return g;
+}
+
+// The narrow loop with the surface of tubes of radius 0.1 along its bones, each point
+// attached to its nearest node. Without the bone 0-1 when `touching`: then the ends at
+// nodes 0 and 1 are two round caps that touch.
+struct LoopWithPoints {
+    SkeletonGraph graph = narrowLoop();
+    PointList points;
+};
+
+LoopWithPoints narrowLoopWithPoints(bool touching) {
+    LoopWithPoints loop;
+    SkeletonGraph& g = loop.graph;
+    shapes::Polyline bones;
+    for (const Edge& e : g.edges) {
+        if (touching && e == Edge{0, 1}) continue;
+        bones.push_back({g.nodes[e[0]], g.nodes[e[1]]});
+    }
+    loop.points = shapes::tube(bones, 0.1, 4000);
+    for (const Point& p : loop.points) {
+        int nearest = 0;
+        for (int n = 1; n < int(g.nodeCount()); ++n) {
+            if ((p - g.nodes[n]).squaredNorm() < (p - g.nodes[nearest]).squaredNorm()) nearest = n;
+        }
+        g.pointNode.push_back(nearest);
+    }
+    return loop;
+}
+
+}  // namespace
+
+TEST(SkeletonRefinement, OpensANarrowLoopWherePartsTouch) {
+    auto [g, points] = narrowLoopWithPoints(true);
+    const RefinementReport report = refineSkeleton(g, points, kSpacing);
+    EXPECT_EQ(report.cyclesCut, 1) << describe(report);
+    EXPECT_EQ(invariantViolation(g), "");
+    const SkeletonTopology t = analyseTopology(g);
+    EXPECT_EQ(t.cycles, 0) << describe(t);
+    EXPECT_EQ(t.components, 1) << describe(t);
+    EXPECT_EQ(t.tips, 2) << describe(t);  // the two ends that touched
+    EXPECT_EQ(g.nodes[report.nodeMap[0]], narrowLoop().nodes[0]) << "the contact's nodes keep their place";
+    EXPECT_NE(describe(report).find("cut 1 narrow loop"), std::string::npos) << describe(report);
+}
+
+TEST(SkeletonRefinement, KeepsANarrowHoleTheSurfaceGoesRound) {
+    auto [g, points] = narrowLoopWithPoints(false);
+    const RefinementReport report = refineSkeleton(g, points, kSpacing);
+    EXPECT_EQ(report.cyclesCut, 0) << describe(report);
+    EXPECT_EQ(analyseTopology(g).cycles, 1);
+}
+
+TEST(SkeletonRefinement, NoLoopIsOpenedWithAnOpeningOfZero) {
+    auto [g, points] = narrowLoopWithPoints(true);
+    const RefinementReport report = refineSkeleton(g, points, kSpacing, NarrowLoopLimits{0.0, 0.35});
+    EXPECT_EQ(report.cyclesCut, 0) << describe(report);
+    EXPECT_EQ(analyseTopology(g).cycles, 1);
 }

@@ -37,6 +37,8 @@ std::string libraryParameterName(Parameter p) {
         case Parameter::DenoisingPasses: return "the denoising passes";
         case Parameter::LinkLimit: return "the stretched-link limit";
         case Parameter::GapLimit: return "the gap limit";
+        case Parameter::LoopOpening: return "the narrow-loop opening";
+        case Parameter::LoopClearance: return "the narrow-loop clearance";
         case Parameter::ContractedPoints: return "the number of contracted points";
         case Parameter::SkeletonTopology: return "the skeleton's topology guarantee";
     }

@@ -38,6 +38,8 @@ enum class Parameter {
     DenoisingPasses,
     LinkLimit,
     GapLimit,
+    LoopOpening,
+    LoopClearance,
     ContractedPoints,
     SkeletonTopology,  // the reconstruction keeps the skeleton's topology
 };

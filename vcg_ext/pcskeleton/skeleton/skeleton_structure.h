@@ -46,6 +46,21 @@ std::vector<std::vector<int>> shortCycleBasis(const SkeletonGraph& graph);
 
 bool isSpuriousCycle(const SkeletonGraph& graph, const std::vector<int>& cycle, double nodeSpacing);
 
+// A loop whose opening (the mean distance of its nodes from their centroid, less their
+// mean radius) is narrower than `minOpening` tube radii: parts that touch, or that noise
+// joined across a narrow gap, rather than a hole the shape has.
+bool isNarrowCycle(const SkeletonGraph& graph, const std::vector<int>& cycle, double minOpening);
+
+// The bone of `cycle` (consecutive nodes, closing back to the first) longest for its
+// nodes' radii: where the loop crosses from one part to another, their balls do not meet.
+Edge mostStretchedBone(const SkeletonGraph& graph, const std::vector<int>& cycle);
+
+// Whether the middle of `bone` passes closer to the surface than `minClearance` of its
+// radius: a bone inside a tube keeps about a radius from its wall, one across a contact
+// between two parts passes through their surfaces.
+bool boneGrazesSurface(const SkeletonGraph& graph, const Edge& bone, const PointList& points,
+                       const std::vector<std::vector<int>>& nodePoints, double minClearance);
+
 // Paths (through degree-2 nodes) that join two junctions and are shorter than `nodeSpacing`.
 std::vector<std::vector<int>> closeJunctionPaths(const SkeletonGraph& graph, double nodeSpacing);
 
