@@ -380,6 +380,7 @@ const char* warningKind(QualityWarning::Kind kind) {
         case QualityWarning::Kind::NodesOutside: return "nodes_outside";
         case QualityWarning::Kind::Spurs: return "spurs";
         case QualityWarning::Kind::SpuriousCycles: return "spurious_cycles";
+        case QualityWarning::Kind::ContactLoops: return "contact_loops";
     }
     return "unknown";
 }

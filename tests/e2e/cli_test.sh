@@ -87,6 +87,20 @@ paper=$($GRAPH show elephant_paper.ply | sed 's/.*nodes.: \([0-9]*\).*/\1/')
 extended=$($GRAPH show elephant.ply | sed 's/.*nodes.: \([0-9]*\).*/\1/')
 [ "$paper" -lt "$extended" ] || fail "--no-extend-tips gave $paper nodes, not fewer than the default's $extended"
 
+# Noise joins two of the three rings (bench_robustness's case): refinement opens that loop and
+# says so; without refinement the report warns of it, naming the option; --loop-opening 0
+# keeps it.
+RINGS="$HERE/../data/scans/three_rings_noise1_6000.ply"
+"$PCSKELETON" "$RINGS" -o rings.ply 2>rings.log
+$GRAPH check rings.ply --cycles 3 --components 1
+grep -q "cut 1 narrow loop," rings.log || { cat rings.log; fail "the report does not count the opened loop"; }
+"$PCSKELETON" "$RINGS" -o rings_unrefined.ply --no-refine 2>rings_unrefined.log
+$GRAPH check rings_unrefined.ply --cycles 4
+grep -q "1 loop is narrower than the tube around them and closed by a bone that crosses the surface" rings_unrefined.log \
+  && grep -q "refinement" rings_unrefined.log || { cat rings_unrefined.log; fail "no warning of the loop where rings touch"; }
+"$PCSKELETON" "$RINGS" -o rings_kept.ply --loop-opening 0 --quiet
+$GRAPH check rings_kept.ply --cycles 4
+
 # One node index per input point; the contracted points (binary PLY) read back as input.
 [ "$(wc -l <elephant.nodes)" = 2775 ] || fail "correspondence has $(wc -l <elephant.nodes) lines, expected 2775"
 head -c 200 elephant_contracted.ply | grep -q "format binary_little_endian" || fail "contracted PLY is not binary"
@@ -167,6 +181,8 @@ expect_error 1 "^pcskeleton: --sl must be at least 1" $M/knot.off -o out.ply --s
 expect_error 1 "^pcskeleton: --denoise must be between 0 (off) and 10, or -1" $M/knot.off -o out.ply --denoise 11
 expect_error 1 "^pcskeleton: --link-limit must be 0 (every link connects" $M/knot.off -o out.ply --link-limit -1
 expect_error 1 "^pcskeleton: --gap-limit must be 0 (no bridge" $M/knot.off -o out.ply --gap-limit -1
+expect_error 1 "^pcskeleton: --loop-opening must be 0" $M/knot.off -o out.ply --loop-opening -1
+expect_error 1 "^pcskeleton: --loop-clearance must be a fraction" $M/knot.off -o out.ply --loop-clearance 2
 for i in $(seq 0 11); do echo "$((i % 4)) $((i / 4)) $((i % 3))"; done >few.xyz
 expect_error 1 "at least 21 are needed.*Lower --k" few.xyz -o out.ply --k 20
 [ ! -e out.ply ] || fail "a failed run wrote out.ply"

@@ -192,6 +192,21 @@ TEST(CurveSkeleton, NoisyThreeRingsKeepTheirThreeLoopsOnly) {
     SkeletonParameters keepEveryLoop;
     keepEveryLoop.thinning.narrowLoops.minOpening = 0;
     EXPECT_EQ(computeCurveSkeleton(scan, keepEveryLoop).quality.topology.cycles, 4);
+
+    // Without refinement the loop stays, and the report says what it probably is.
+    SkeletonParameters unrefined;
+    unrefined.thinning.refine = false;
+    const SkeletonQuality q = computeCurveSkeleton(scan, unrefined).quality;
+    EXPECT_EQ(q.topology.cycles, 4) << describe(q.topology);
+    EXPECT_EQ(q.contactLoops.size(), 1u);
+    const auto warnings = q.warnings();
+    const auto contact = std::find_if(warnings.begin(), warnings.end(), [](const QualityWarning& w) {
+        return w.kind == QualityWarning::Kind::ContactLoops;
+    });
+    ASSERT_NE(contact, warnings.end()) << describe(q);
+    EXPECT_NE(contact->problem.description.find("1 loop is narrower than the tube"), std::string::npos)
+        << contact->problem.description;
+    EXPECT_TRUE(r.quality.contactLoops.empty()) << "refinement opened it: no warning";
 }
 
 TEST(CurveSkeleton, NarrowLoopLimitsMustBeInRange) {

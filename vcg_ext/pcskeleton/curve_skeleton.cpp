@@ -3,6 +3,7 @@
 #include "pcskeleton/analysis/node_recentering.h"
 #include "pcskeleton/analysis/gap_bridging.h"
 #include "pcskeleton/analysis/skeleton_refinement.h"
+#include "pcskeleton/skeleton/skeleton_structure.h"
 #include "pcskeleton/internal/machine_memory.h"
 #include "pcskeleton/internal/stopwatch.h"
 #include "pcskeleton/skeleton/skeleton_embedding.h"
@@ -94,6 +95,11 @@ void thinAndEmbed(const NormalizedCloud& cloud, const OneRings& rings, const Poi
     // the gap in the data and nothing more.
     const GapBridgingReport bridging = bridgeGaps(result.skeleton, nodeSpacing, parameters.gapLimit);
     result.quality = assessSkeleton(result.skeleton, cloud, rings, contracted, nodeSpacing);
+    if (!parameters.refine) {
+        for (ContactLoop& loop : contactLoops(result.skeleton, points, parameters.narrowLoops)) {
+            result.quality.contactLoops.push_back(std::move(loop.cycle));
+        }
+    }
     // A re-centred node is off its points' centre by design, not outside the shape.
     std::vector<int>& outside = result.quality.nodesOutside;
     for (int moved : recentering.nodes) outside.erase(std::remove(outside.begin(), outside.end(), moved), outside.end());

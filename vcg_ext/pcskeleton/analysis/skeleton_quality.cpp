@@ -173,6 +173,13 @@ std::vector<QualityWarning> SkeletonQuality::warnings() const {
             {Remedy::turnOn(Parameter::Refinement), Remedy::raise(Parameter::NodeSpacing),
              Remedy::take(Step::MergeNodes)});
     }
+    if (!contactLoops.empty()) {
+        add(Kind::ContactLoops,
+            counted(contactLoops.size(), "loop is", "loops are") +
+                " narrower than the tube around them and closed by a bone that crosses the surface: "
+                "probably two parts that touch, or noise across a narrow gap.",
+            {Remedy::turnOn(Parameter::Refinement), Remedy::take(Step::DeleteNodes)});
+    }
     return w;
 }
 

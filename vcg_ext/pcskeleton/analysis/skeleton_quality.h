@@ -37,6 +37,7 @@ struct QualityWarning {
         NodesOutside,
         Spurs,
         SpuriousCycles,
+        ContactLoops,
     };
     Kind kind;
     Problem problem;
@@ -66,6 +67,9 @@ struct SkeletonQuality {
     std::vector<int> nodesOutside;  // nodes with all their points on one side
     std::vector<std::vector<int>> spurs;           // node paths, tip first
     std::vector<std::vector<int>> spuriousCycles;  // node cycles
+    // Narrow loops whose bone crosses the surface (skeleton_structure.h, contactLoops),
+    // sought only when refinement, which opens them, did not run.
+    std::vector<std::vector<int>> contactLoops;
 
     bool recentred = false;
     RecenteringReport recentering;

@@ -78,29 +78,23 @@ std::vector<NodeGroup> spuriousCycleGroups(const SkeletonGraph& skeleton, double
     return groups;
 }
 
-// Loops narrower than their tube whose most stretched bone grazes the surface are parts
-// that touch (or that noise joined across a narrow gap): each is opened at that bone.
-// Measured once, on the loops thinning gave: after a cut the basis may pair what is left
-// of a loop with a neighbouring one and measure the two as one narrow loop (the paper's
+// Each contact loop (skeleton_structure.h) is opened at its bone. Measured once, on the
+// loops thinning gave: after a cut the basis may pair what is left of a loop with a
+// neighbouring one and measure the two as one narrow loop (the paper's
 // misaligned_scans_0.015 lost a real hole of Fertility that way).
 int cutContactLoops(SkeletonGraph& skeleton, const PointList& points, const NarrowLoopLimits& limits) {
-    if (points.empty() || !(limits.minOpening > 0.0)) return 0;
     normalizeEdges(skeleton.edges);  // sorted, for the searches below
-    const std::vector<std::vector<int>> nodePoints = pointsOfNodes(skeleton);
     int cuts = 0;
-    for (const std::vector<int>& cycle : shortCycleBasis(skeleton)) {
-        if (!isNarrowCycle(skeleton, cycle, limits.minOpening)) continue;
-        const Edge bone = mostStretchedBone(skeleton, cycle);
-        if (!boneGrazesSurface(skeleton, bone, points, nodePoints, limits.minClearance)) continue;
+    for (const ContactLoop& loop : contactLoops(skeleton, points, limits)) {
         // Only a loop still whole is opened, so that a cut never splits the skeleton.
         bool whole = true;
-        for (std::size_t i = 0; i < cycle.size() && whole; ++i) {
-            Edge e{cycle[i], cycle[(i + 1) % cycle.size()]};
+        for (std::size_t i = 0; i < loop.cycle.size() && whole; ++i) {
+            Edge e{loop.cycle[i], loop.cycle[(i + 1) % loop.cycle.size()]};
             if (e[0] > e[1]) std::swap(e[0], e[1]);
             whole = std::binary_search(skeleton.edges.begin(), skeleton.edges.end(), e);
         }
         if (!whole) continue;
-        skeleton.edges.erase(std::lower_bound(skeleton.edges.begin(), skeleton.edges.end(), bone));
+        skeleton.edges.erase(std::lower_bound(skeleton.edges.begin(), skeleton.edges.end(), loop.bone));
         ++cuts;
     }
     return cuts;

@@ -7,7 +7,7 @@
 // 2. Each spurious cycle (a loop without a hole) collapses to one node at its centre.
 //    A loop whose opening is narrower than its tube, and whose most stretched bone (its
 //    nodes' balls do not meet) passes through the surface, is two parts that touch or
-//    that noise joined: it is opened at that bone (NarrowLoopLimits).
+//    that noise joined: it is opened at that bone (skeleton_structure.h, contactLoops).
 // 3. Junctions joined by a path shorter than the node spacing merge into one node at the
 //    path's centre.
 // Repeated until nothing changes, since each step can expose more. Merged nodes keep all
@@ -15,6 +15,7 @@
 #pragma once
 
 #include "pcskeleton/skeleton/skeleton_graph.h"
+#include "pcskeleton/skeleton/skeleton_structure.h"
 
 #include <string>
 #include <vector>
@@ -25,20 +26,6 @@ struct RefinementReport {
     int spursRemoved = 0, cyclesCollapsed = 0, cyclesCut = 0, junctionsMerged = 0;
     std::vector<int> nodeMap;  // per node of the skeleton given: the node it became
     bool changedAnything() const { return spursRemoved + cyclesCollapsed + cyclesCut + junctionsMerged > 0; }
-};
-
-// When a loop is a contact between parts rather than a hole (skeleton_structure.h:
-// isNarrowCycle, boneGrazesSurface). Defaults by bench_robustness --loop-opening X
-// --loop-clearance F (README, Benchmarks): an opening under 1 tube radius and a bone
-// passing within 0.35 of its radius of a point turn 2 cases of 132 right (the three rings
-// with 1% noise, the elephant with half its points in 10% of its surface), remove false
-// loops in 8 cases still wrong and break none; every hole of the paper's 9HandleTorus and
-// Fertility inputs stays. A clearance of 0.45 loses a handle of 9HandleTorus and a hole of
-// Fertility misaligned by 1%; an opening of 1.6 the holes of libcgal-demo's eight under
-// 2% noise and 5% outliers.
-struct NarrowLoopLimits {
-    double minOpening = 1.0;     // in tube radii; 0 = no loop is cut
-    double minClearance = 0.35;  // fraction of the bone's radius
 };
 
 // "removed 2 spurs, collapsed 1 small loop, cut 0 narrow loops, merged 0 close junctions"

@@ -221,6 +221,19 @@ bool boneGrazesSurface(const SkeletonGraph& graph, const Edge& bone, const Point
     return false;
 }
 
+std::vector<ContactLoop> contactLoops(const SkeletonGraph& graph, const PointList& points,
+                                      const NarrowLoopLimits& limits) {
+    std::vector<ContactLoop> loops;
+    if (points.empty() || !(limits.minOpening > 0.0)) return loops;
+    const std::vector<std::vector<int>> nodePoints = pointsOfNodes(graph);
+    for (std::vector<int>& cycle : shortCycleBasis(graph)) {
+        if (!isNarrowCycle(graph, cycle, limits.minOpening)) continue;
+        const Edge bone = mostStretchedBone(graph, cycle);
+        if (boneGrazesSurface(graph, bone, points, nodePoints, limits.minClearance)) loops.push_back({std::move(cycle), bone});
+    }
+    return loops;
+}
+
 Edge mostStretchedBone(const SkeletonGraph& graph, const std::vector<int>& cycle) {
     Edge best{cycle[0], cycle[1 % cycle.size()]};
     double bestStretch = -1.0;
