@@ -246,12 +246,12 @@ int main(int argc, char** argv) {
     const bool write = !args.empty() && args[0] == "--write" && args.size() >= 4;
     const bool outliers = std::find(args.begin(), args.end(), "--outliers") != args.end();
     const bool paper = std::find(args.begin(), args.end(), "--paper") != args.end();
+    const std::set<std::string> optionsWithValue{"--contracted-points", "--shape", "--gap-limit", "--loop-opening",
+                                                 "--loop-clearance"};
     std::size_t n = 6000;
     std::vector<double> numbers;
     for (std::size_t a = write ? 4 : 0; a < args.size(); ++a) {
-        if (args[a] == "--contracted-points" || args[a] == "--shape" || args[a] == "--gap-limit" ||
-            args[a] == "--loop-opening" || args[a] == "--loop-clearance")
-            ++a;  // not a size
+        if (optionsWithValue.count(args[a])) ++a;  // its value is not a size
         else if (args[a].rfind("--", 0) != 0) numbers.push_back(std::atof(args[a].c_str()));
     }
     if (!numbers.empty()) n = std::size_t(numbers[0]);
