@@ -1,13 +1,15 @@
 // Tip extension (after the paper's step 5). Contraction pulls the ends of limbs inwards,
 // so the tip node, the centre of its points, stops short of the limb's end: the skeleton
 // is shorter than the shape. Each limb that is not a spur is extended from its tip, along
-// its direction over the last bones, to the farthest of the tip's own points that lie
-// within 1.5 tip radii of the limb's axis (outliers and noise off to the side do not
-// count).
+// its direction over the last bones, to where its points end: those of the tip and of the
+// nodes up to two node spacings behind it that lie within 1.5 radii of the limb's axis
+// (outliers and noise off to the side do not count), and where their density along the
+// axis falls to 0.4 of its level (on a clean limb the farthest of them; under noise, not
+// the noise's tail beyond the end).
 //
 // The new end node owns no points (the tip keeps them); its radius is the thickness of
-// the shape at the end: the mean distance from the limb's axis of the tip's points in the
-// last quarter-radius before the end.
+// the shape at the end: the mean distance from the limb's axis of those points in the last
+// quarter of the tip's radius before the end.
 #pragma once
 
 #include "pcskeleton/skeleton/skeleton_graph.h"
