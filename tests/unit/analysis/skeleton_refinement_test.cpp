@@ -49,6 +49,35 @@ TEST(SkeletonRefinement, RemovesSpursCollapsesFalseLoopsAndMergesCloseJunctions)
     for (int node : report.nodeMap) EXPECT_TRUE(node >= 0 && node < int(g.nodeCount()));
 }
 
+TEST(SkeletonRefinement, TrimsStragglingEndsButNotThinLimbs) {
+    // Each node of the chain owns 20 points; the straggling nodes own one each.
+    SkeletonGraph g = straightChain();
+    for (int node = 0; node <= 10; ++node) g.pointNode.insert(g.pointNode.end(), 20, node);
+    auto ownOnePoint = [&](int node) { g.pointNode.push_back(node); return node; };
+    // A hook of two one-point nodes bends the end of the chain sideways.
+    const int hookStart = ownOnePoint(addNode(g, Point(1.05, 0.06, 0), 10));
+    const int hookEnd = ownOnePoint(addNode(g, Point(1.02, 0.1, 0), hookStart));
+    // A limb of one one-point node, too long to be a spur.
+    const int stray = ownOnePoint(addNode(g, Point(0.5, 0.3, 0), 5));
+    // A thin limb: one point per node too, four in all.
+    int thin = 3;
+    for (int step = 1; step <= 4; ++step) thin = ownOnePoint(addNode(g, Point(0.3, -0.1 * step, 0), thin));
+    ASSERT_EQ(invariantViolation(g), "");
+    ASSERT_EQ(analyseTopology(g).tips, 4);
+
+    const RefinementReport report = refineSkeleton(g, {}, kSpacing);
+    EXPECT_EQ(invariantViolation(g), "");
+    EXPECT_EQ(report.endsTrimmed, 2) << describe(report);
+    EXPECT_EQ(report.spursRemoved, 0) << describe(report);
+    EXPECT_EQ(analyseTopology(g).tips, 3) << "the chain's ends and the thin limb";
+    // The stragglers' points went to the node they hung from, which kept its place.
+    EXPECT_EQ(report.nodeMap[hookEnd], report.nodeMap[10]);
+    EXPECT_EQ(report.nodeMap[hookStart], report.nodeMap[10]);
+    EXPECT_TRUE(g.nodes[report.nodeMap[10]].isApprox(Point(1.0, 0, 0)));
+    EXPECT_EQ(report.nodeMap[stray], report.nodeMap[5]);
+    EXPECT_NE(report.nodeMap[thin], report.nodeMap[3]) << "the thin limb stays";
+}
+
 TEST(SkeletonRefinement, LeavesACleanSkeletonAlone) {
     SkeletonGraph ring = shapes::curveSkeleton(shapes::circle(Point::Zero(), 1.0, 24), 0.3);
     const SkeletonGraph before = ring;

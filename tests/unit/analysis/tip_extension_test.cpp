@@ -3,6 +3,7 @@
 #include <pcskeleton/curve_skeleton.h>
 #include "support/hand_made_graphs.h"
 #include "support/sampled_shapes.h"
+#include "support/scan_simulation.h"
 
 #include <gtest/gtest.h>
 
@@ -50,6 +51,22 @@ TEST(TipExtension, ReachesTheEndsOfACappedTube) {
     EXPECT_NEAR(after.high, 1.1, 0.01);
     // The new end nodes own no points; the old tips keep theirs.
     EXPECT_EQ(extended.skeleton.pointNode, short_.skeleton.pointNode);
+}
+
+TEST(TipExtension, StopsAtTheEndsOfANoisyTubeNotAtItsFarthestPoints) {
+    // Noise of 2% of the diagonal (about a quarter of the radius) scatters points well beyond
+    // the caps; the limb still ends at the caps, where the points' density along the axis falls.
+    const PointList cloud = shapes::withNoise(shapes::cylinder(6000, 0.1, 1.0, /*capped=*/true), 0.02);
+    double lowest = 1e9, highest = -1e9;
+    for (const Point& p : cloud) lowest = std::min(lowest, p.z()), highest = std::max(highest, p.z());
+    ASSERT_LT(lowest, -0.1 - 0.05);
+    ASSERT_GT(highest, 1.1 + 0.05);
+    const SkeletonResult result = computeCurveSkeleton(cloud);
+    ASSERT_EQ(analyseTopology(result.skeleton).tips, 2);
+    EXPECT_EQ(result.quality.tipExtension.extendedTips, 2);
+    const TipEnds ends = tipEnds(result.skeleton);
+    EXPECT_NEAR(ends.low, -0.1, 0.02);
+    EXPECT_NEAR(ends.high, 1.1, 0.02);
 }
 
 TEST(TipExtension, LeavesLoopsAndSpursAlone) {

@@ -70,6 +70,15 @@ std::vector<NodeGroup> spurGroups(const SkeletonGraph& skeleton, const PointList
     return groups;
 }
 
+std::vector<NodeGroup> stragglingEndGroups(const SkeletonGraph& skeleton, double nodeSpacing) {
+    std::vector<NodeGroup> groups;
+    for (std::vector<int>& end : stragglingEnds(skeleton, pointsOfNodes(skeleton), nodeSpacing)) {
+        const int keeper = end.back();
+        groups.push_back({std::move(end), keeper});
+    }
+    return groups;
+}
+
 std::vector<NodeGroup> spuriousCycleGroups(const SkeletonGraph& skeleton, double nodeSpacing) {
     std::vector<NodeGroup> groups;
     for (std::vector<int>& cycle : shortCycleBasis(skeleton)) {
@@ -109,7 +118,8 @@ std::vector<NodeGroup> closeJunctionGroups(const SkeletonGraph& skeleton, double
 }  // namespace
 
 std::string describe(const RefinementReport& r) {
-    return "removed " + counted(std::size_t(r.spursRemoved), "spur") + ", collapsed " +
+    return "removed " + counted(std::size_t(r.spursRemoved), "spur") + ", trimmed " +
+           counted(std::size_t(r.endsTrimmed), "straggling end") + ", collapsed " +
            counted(std::size_t(r.cyclesCollapsed), "small loop") + ", cut " +
            counted(std::size_t(r.cyclesCut), "narrow loop") + ", merged " +
            counted(std::size_t(r.junctionsMerged), "pair") + " of close junctions";
@@ -127,14 +137,16 @@ RefinementReport refineSkeleton(SkeletonGraph& skeleton, const PointList& points
     };
     for (int pass = 0; pass < kMaxPasses; ++pass) {
         const int spurs = merge(spurGroups(skeleton, points, nodeSpacing));
+        const int ends = merge(stragglingEndGroups(skeleton, nodeSpacing));
         const int cycles = merge(spuriousCycleGroups(skeleton, nodeSpacing));
         const int cuts = pass == 0 ? cutContactLoops(skeleton, points, narrowLoops) : 0;
         const int junctions = merge(closeJunctionGroups(skeleton, nodeSpacing));
         report.spursRemoved += spurs;
+        report.endsTrimmed += ends;
         report.cyclesCollapsed += cycles;
         report.cyclesCut += cuts;
         report.junctionsMerged += junctions;
-        if (spurs + cycles + cuts + junctions == 0) break;
+        if (spurs + ends + cycles + cuts + junctions == 0) break;
     }
     return report;
 }

@@ -4,6 +4,8 @@
 //
 // 1. Spurs and redundant limbs are absorbed into the junction they sprout from (which
 //    keeps its place).
+//    The straggling end of a limb (a few nodes of a few noisy points past its end) is
+//    absorbed into the first node that owns enough points (which keeps its place).
 // 2. Each spurious cycle (a loop without a hole) collapses to one node at its centre.
 //    A loop whose opening is narrower than its tube, and whose most stretched bone (its
 //    nodes' balls do not meet) passes through the surface, is two parts that touch or
@@ -23,12 +25,15 @@
 namespace pcskeleton {
 
 struct RefinementReport {
-    int spursRemoved = 0, cyclesCollapsed = 0, cyclesCut = 0, junctionsMerged = 0;
+    int spursRemoved = 0, endsTrimmed = 0, cyclesCollapsed = 0, cyclesCut = 0, junctionsMerged = 0;
     std::vector<int> nodeMap;  // per node of the skeleton given: the node it became
-    bool changedAnything() const { return spursRemoved + cyclesCollapsed + cyclesCut + junctionsMerged > 0; }
+    bool changedAnything() const {
+        return spursRemoved + endsTrimmed + cyclesCollapsed + cyclesCut + junctionsMerged > 0;
+    }
 };
 
-// "removed 2 spurs, collapsed 1 small loop, cut 0 narrow loops, merged 0 close junctions"
+// "removed 2 spurs, trimmed 0 straggling ends, collapsed 1 small loop, cut 0 narrow loops,
+// merged 0 pairs of close junctions"
 std::string describe(const RefinementReport& report);
 
 // `nodeSpacing` is the thinning radius, in the skeleton's units; `points` its input points

@@ -15,6 +15,9 @@ namespace {
 // redundant: a few points of a real limb can be close to the body (its base), and noise
 // puts a few of a redundant one outside.
 constexpr double kCoveredShare = 0.9;
+// A node at a limb's end owning fewer than this share of the points of the skeleton's
+// median node is a straggler (stragglingEnds).
+constexpr double kStragglerShare = 0.1;
 
 double boneLength(const SkeletonGraph& graph, int a, int b) { return (graph.nodes[a] - graph.nodes[b]).norm(); }
 
@@ -86,6 +89,37 @@ std::vector<Limb> tipLimbs(const SkeletonGraph& graph) {
 bool isSpur(const SkeletonGraph& graph, const Limb& limb, double nodeSpacing) {
     if (!limb.atJunction) return false;  // a whole component, not a spur of something
     return limb.length < std::max(graph.radii[limb.path.back()], nodeSpacing);
+}
+
+std::vector<std::vector<int>> stragglingEnds(const SkeletonGraph& graph,
+                                             const std::vector<std::vector<int>>& nodePoints, double nodeSpacing) {
+    std::vector<std::size_t> counts;
+    for (const std::vector<int>& owned : nodePoints) {
+        if (!owned.empty()) counts.push_back(owned.size());
+    }
+    if (counts.empty()) return {};
+    std::nth_element(counts.begin(), counts.begin() + counts.size() / 2, counts.end());
+    const double fewest = kStragglerShare * double(counts[counts.size() / 2]);
+    const auto owns = [&](int n) { return double(nodePoints[n].size()); };
+
+    std::vector<std::vector<int>> ends;
+    for (const Limb& limb : tipLimbs(graph)) {
+        // The first node from the tip that owns enough points keeps them all. The node the
+        // limb ends at may keep them only if all the limb's nodes together own too few: a
+        // thin limb has few points per node, but not in all.
+        const auto keeper = std::find_if(limb.path.begin(), limb.path.end(), [&](int n) { return owns(n) >= fewest; });
+        if (keeper == limb.path.begin() || keeper == limb.path.end()) continue;
+        if (keeper + 1 == limb.path.end()) {
+            double limbPoints = 0.0;
+            for (auto n = limb.path.begin(); n != keeper; ++n) limbPoints += owns(*n);
+            if (!limb.atJunction || limbPoints >= fewest) continue;
+        }
+        const double reach = graph.radii[*keeper] + 2.0 * nodeSpacing;
+        const bool near = std::all_of(limb.path.begin(), keeper,
+                                      [&](int n) { return (graph.nodes[n] - graph.nodes[*keeper]).norm() <= reach; });
+        if (near) ends.emplace_back(limb.path.begin(), keeper + 1);
+    }
+    return ends;
 }
 
 bool isRedundantLimb(const SkeletonGraph& graph, const Limb& limb, const PointList& points,

@@ -35,6 +35,17 @@ std::vector<Limb> tipLimbs(const SkeletonGraph& graph);
 
 bool isSpur(const SkeletonGraph& graph, const Limb& limb, double nodeSpacing);
 
+// The straggling ends of the limbs. Noise scatters a few points past a limb's end, and
+// thinning can string them into small nodes that bend the end sideways (a hook, which
+// sends tip extension off the axis) or sprout a limb of their own. A straggling end is
+// the nodes from a tip that each own fewer than a tenth of the points of the skeleton's
+// median node, up to (and with, last) the first node that owns more, if they all lie
+// within that node's radius plus two node spacings of it. That node may be the junction
+// the limb ends at (the whole limb is stragglers) only if the limb's nodes together own
+// fewer points than that tenth: a thin limb has few points per node, but more in all.
+std::vector<std::vector<int>> stragglingEnds(const SkeletonGraph& graph,
+                                             const std::vector<std::vector<int>>& nodePoints, double nodeSpacing);
+
 // `points` are the skeleton's input points (graph.pointNode's), `nodePoints` their lists
 // per node (pointsOfNodes); false for a limb without points or not at a junction.
 bool isRedundantLimb(const SkeletonGraph& graph, const Limb& limb, const PointList& points,
