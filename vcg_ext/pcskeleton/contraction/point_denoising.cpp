@@ -23,23 +23,8 @@ double surfaceNoise(const PointList& points, int neighbours) {
 #pragma omp for schedule(static)
         for (long s = 0; s < samples; ++s) {
             index.nearest(points[std::size_t(s) * 7], neighbours, found);
-            const LocalPlane frame = fitLocalPlane(points, found);
-            const Point& centroid = frame.centroid;
-            const Point normal = frame.axes.col(0), u = frame.axes.col(2), v = frame.axes.col(1);
-            Eigen::MatrixXd basis(found.size(), 6);
-            Eigen::VectorXd height(found.size());
-            double extent = 0;
-            for (std::size_t r = 0; r < found.size(); ++r) {
-                const Point d = points[std::size_t(found[r])] - centroid;
-                const double x = d.dot(u), y = d.dot(v);
-                basis.row(Eigen::Index(r)) << 1, x, y, x * x, x * y, y * y;
-                height[Eigen::Index(r)] = d.dot(normal);
-                extent += x * x + y * y;
-            }
-            extent = std::sqrt(extent / double(found.size()));
-            const Eigen::VectorXd fit = basis.colPivHouseholderQr().solve(height);
-            const double residual = std::sqrt((basis * fit - height).squaredNorm() / double(found.size()));
-            if (extent > 0) ratios[std::size_t(s)] = residual / extent;
+            const LocalQuadric quadric = fitLocalQuadric(points, found);
+            if (quadric.extent > 0) ratios[std::size_t(s)] = quadric.residual / quadric.extent;
         }
     }
     ratios.erase(std::remove(ratios.begin(), ratios.end(), -1.0), ratios.end());
