@@ -14,7 +14,8 @@
 // system's meshlabserver under xvfb-run; its time includes meshlabserver's start (about
 // 0.5 s). Its surface has no skeleton to follow: the topology columns are left empty.
 //
-// usage: bench_surface [POINTS] [--resolution R] [--shape TEXT] [--data-topology] [--uniform-point-weights] [--poisson]
+// usage: bench_surface [POINTS] [--resolution R] [--shape TEXT] [--data-topology] [--uniform-point-weights]
+//                      [--level-set] [--poisson]
 //                      [--surface-weight W2] [--smooth-weight W1]
 //        POINTS per clean sample (default 6000, as bench_robustness), R the grid (128)
 #include "robustness_suite.h"
@@ -134,12 +135,13 @@ int main(int argc, char** argv) {
         else if (arg == "--shape" && a + 1 < argc) onlyShape = argv[++a];
         else if (arg == "--data-topology") parameters.keepSkeletonTopology = false;
         else if (arg == "--uniform-point-weights") parameters.adaptToNoise = false;
+        else if (arg == "--level-set") parameters.fitVerticesToPoints = false;
         else if (arg == "--poisson") poisson = true;
         else if (arg == "--surface-weight" && a + 1 < argc) parameters.surfaceWeight = std::atof(argv[++a]);
         else if (arg == "--smooth-weight" && a + 1 < argc) parameters.smoothWeight = std::atof(argv[++a]);
         else if (arg.rfind("--", 0) != 0) n = std::strtoull(arg.c_str(), nullptr, 10);
         else {
-            std::fprintf(stderr, "usage: bench_surface [POINTS] [--resolution R] [--shape TEXT] [--data-topology] [--uniform-point-weights] [--poisson]\n"
+            std::fprintf(stderr, "usage: bench_surface [POINTS] [--resolution R] [--shape TEXT] [--data-topology] [--uniform-point-weights] [--level-set] [--poisson]\n"
                                  "       [--surface-weight W2] [--smooth-weight W1]\n");
             return 2;
         }
@@ -150,10 +152,11 @@ int main(int argc, char** argv) {
                     "Distances to the true surface where data exists, in %% of the diagonal.\n",
                     n, sysconf(_SC_NPROCESSORS_ONLN));
     } else {
-        std::printf("Surface from each scan's own skeleton, resolution %d, %s, %s, %zu points per clean sample, %ld cores.\n"
+        std::printf("Surface from each scan's own skeleton, resolution %d, %s, %s, %s, %zu points per clean sample, %ld cores.\n"
                     "Distances to the true surface where data exists, in %% of the diagonal.\n",
                     parameters.resolution, parameters.keepSkeletonTopology ? "topology guarantee" : "plain fit",
-                    parameters.adaptToNoise ? "noise-adapted point weights" : "uniform point weights", n,
+                    parameters.adaptToNoise ? "noise-adapted point weights" : "uniform point weights",
+                    parameters.fitVerticesToPoints ? "vertices fitted to the points" : "the level set as it is", n,
                     sysconf(_SC_NPROCESSORS_ONLN));
     }
     std::printf("%-24s %-14s %9s %9s %5s %7s %7s %5s %8s %8s\n", "shape", "condition", "skeleton", "surface", "kept",

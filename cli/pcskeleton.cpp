@@ -136,6 +136,9 @@ void printHelp() {
         "  --uniform-point-weights  every point weighs w2 (the paper); by default points\n"
         "                        whose neighbours scatter across the surface by more than\n"
         "                        a grid cell (noise) weigh less, so noise makes no bumps\n"
+        "  --level-set           the field's zero level set as it is (the paper); by\n"
+        "                        default, where there are points, the surface's vertices\n"
+        "                        move (at most a cell) onto a local fit of the points\n"
         "\n"
         "After the run a quality report goes to stderr: cycles, tips, junctions, parts,\n"
         "whether contraction converged, and warnings (points that did not contract, parts\n"
@@ -219,7 +222,7 @@ void printHelp() {
         "  --paper               the paper's pipeline exactly: the same as --keep-outliers\n"
         "                        --denoise 0 --no-recentre --no-refine --no-extend-tips\n"
         "                        --link-limit 0 --gap-limit 0 --full-resolution (and\n"
-        "                        --data-topology --uniform-point-weights)\n"
+        "                        --data-topology --uniform-point-weights --level-set)\n"
         "  --report FILE         also write the quality report to FILE\n"
         "  --force               replace output files that exist already (never the input)\n"
         "  --quiet               no progress and no summary on stderr\n"
@@ -364,6 +367,8 @@ bool parseArguments(int argc, char** argv, Options& options) {
             options.reconstruction.keepSkeletonTopology = false;
         } else if (arg == "--uniform-point-weights") {
             options.reconstruction.adaptToNoise = false;
+        } else if (arg == "--level-set") {
+            options.reconstruction.fitVerticesToPoints = false;
         } else if (arg == "--paper") {
             options.parameters.keepToThePaper();
             options.reconstruction.keepToThePaper();

@@ -195,6 +195,11 @@ void addReconstructionParameters(RichParameterList& list) {
         "Points whose neighbours scatter across the surface by more than a grid cell (scan noise) weigh less in "
         "the fit, so the surface passes through their middle instead of following each bump. Clean parts are "
         "not changed. Untick for the paper's fit, where every point weighs the surface weight w2."));
+    list.addParam(RichBool("fitVerticesToPoints", d.fitVerticesToPoints, "Fit the surface to the points",
+        "Where there are points, each vertex of the surface moves (by at most a grid cell) onto a smooth local fit "
+        "of its nearest points: the field's smoothness rounds thin parts inward by a fraction of a cell, the local "
+        "fit does not. Triangles do not change, so neither does the topology. Untick for the field's zero level "
+        "set as it is (the paper's)."));
 }
 
 pcskeleton::ReconstructionParameters readReconstructionParameters(const RichParameterList& list) {
@@ -207,6 +212,7 @@ pcskeleton::ReconstructionParameters readReconstructionParameters(const RichPara
     p.outsideRadii = list.getFloat("outsideRadii");
     p.keepSkeletonTopology = list.getBool("keepSkeletonTopology");
     p.adaptToNoise = list.getBool("adaptToNoise");
+    p.fitVerticesToPoints = list.getBool("fitVerticesToPoints");
     return p;
 }
 

@@ -206,6 +206,7 @@ const std::map<std::string, Keyword>& reconstructionKeywords() {
         {"outside_radii", field<double>([](Settings& s) -> double& { return s.reconstruction.outsideRadii; })},
         {"data_topology", inverted([](Settings& s) -> bool& { return s.reconstruction.keepSkeletonTopology; })},
         {"uniform_point_weights", inverted([](Settings& s) -> bool& { return s.reconstruction.adaptToNoise; })},
+        {"level_set", inverted([](Settings& s) -> bool& { return s.reconstruction.fitVerticesToPoints; })},
     };
     return keywords;
 }

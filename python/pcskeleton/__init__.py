@@ -97,6 +97,8 @@ _RECONSTRUCTION_HELP = [
     ("data_topology", "the paper's plain fit: the surface may have handles and parts the skeleton "
                       "has not (by default it has exactly the skeleton's topology)."),
     ("uniform_point_weights", "every point weighs w2 (the paper); by default noisy points weigh less."),
+    ("level_set", "the field's zero level set as it is (the paper); by default, where there are points, "
+                  "the surface's vertices move (at most a grid cell) onto a local fit of the points."),
 ]
 
 

@@ -223,6 +223,15 @@ def test_reconstruction_follows_the_skeleton(torus_points, torus_skeleton):
     assert cut["genus"] == 0 and cut["components"] == 1
 
 
+def test_reconstruction_fits_the_vertices_unless_asked_for_the_level_set(torus_points, torus_skeleton):
+    vertices, faces, report = pcskeleton.reconstruct(torus_points, torus_skeleton, resolution=48)
+    level_vertices, level_faces, level_report = pcskeleton.reconstruct(torus_points, torus_skeleton,
+                                                                       resolution=48, level_set=True)
+    assert "fit to the points:" in report["text"] and "fit to the points:" not in level_report["text"]
+    assert np.array_equal(faces, level_faces) and not np.array_equal(vertices, level_vertices)
+    assert level_report["genus"] == 1
+
+
 def test_reconstruction_refuses_bad_parameters(torus_points, torus_skeleton):
     with pytest.raises(ValueError, match="resolution"):
         pcskeleton.reconstruct(torus_points, torus_skeleton, resolution=8)

@@ -140,7 +140,7 @@ grep -q "^Gaps in the data: off.$" gapped_paper.txt || fail "--gap-limit 0 still
 # --help documents every option with its default.
 "$PCSKELETON" --help >help.txt
 for option in --contracted --correspondence --k --wl --wh --sl --max-wl --max-wh --row-limit --iterations \
-              --threshold --radius --link-limit --gap-limit --loop-opening --loop-clearance --uniform-point-weights --no-extend-tips --refine --no-refine --no-recentre --keep-outliers --outlier-isolation \
+              --threshold --radius --link-limit --gap-limit --loop-opening --loop-clearance --uniform-point-weights --level-set --no-extend-tips --refine --no-refine --no-recentre --keep-outliers --outlier-isolation \
               --outlier-local --outlier-cluster --denoise --contracted-points --full-resolution --memory-limit \
               --paper --report --force --quiet; do
   grep -q -- "$option" help.txt || fail "--help does not document $option"
@@ -246,6 +246,11 @@ grep -q "^constraints: [0-9]* surface samples (mean weight [0-9]*% of w2)" torus
   || { cat torus_ring.log; fail "the report does not give the surface samples' mean weight"; }
 "$PCSKELETON" torus.ply --skeleton ring.ply --surface torus_uniform.off --uniform-point-weights 2>torus_uniform.log
 grep -q "(mean weight 100% of w2)" torus_uniform.log || { cat torus_uniform.log; fail "--uniform-point-weights did not weigh every point w2"; }
+grep -q "^fit to the points: [1-9][0-9]* vertices moved, by 0\.[0-9]* cells on average" torus_ring.log \
+  || { cat torus_ring.log; fail "the report does not say how the vertices were fitted to the points"; }
+"$PCSKELETON" torus.ply --skeleton ring.ply --surface torus_level_set.off --level-set 2>torus_level_set.log
+grep -q "^result: 1 component, genus 1, closed 2-manifold" torus_level_set.log && ! grep -q "^fit to the points:" torus_level_set.log \
+  || { cat torus_level_set.log; fail "--level-set still fitted the vertices to the points"; }
 "$PCSKELETON" torus.ply --skeleton ring.ply --surface torus_ring.ply --quiet
 head -c 300 torus_ring.ply | grep -q "element face" || fail "the PLY surface has no faces"
 expect_error 2 "--skeleton is for reconstruction: add --surface" torus.ply --skeleton ring.ply

@@ -96,13 +96,15 @@ TEST_F(ReconstructionFilterTest, DeclaredWithTwoLayersAndHelpText) {
     EXPECT_TRUE(plugin->getClass(a) & MeshFilterInterface::PointSet);
     const RichParameterList parameters = defaults(a);
     for (const char* name : {"pointsLayer", "skeletonLayer", "resolution", "smoothWeight", "surfaceWeight",
-                             "skeletonWeight", "outsideWeight", "outsideRadii", "keepSkeletonTopology", "adaptToNoise"})
+                             "skeletonWeight", "outsideWeight", "outsideRadii", "keepSkeletonTopology", "adaptToNoise",
+                             "fitVerticesToPoints"})
         EXPECT_TRUE(parameters.hasParameter(name)) << name;
     for (const RichParameter& p : parameters) EXPECT_FALSE(p.toolTip().isEmpty()) << p.name().toStdString();
     EXPECT_EQ(parameters.getInt("resolution"), 128);
     EXPECT_FLOAT_EQ(parameters.getFloat("surfaceWeight"), 5.0f);
     EXPECT_FLOAT_EQ(parameters.getFloat("outsideRadii"), 4.0f);
     EXPECT_TRUE(parameters.getBool("adaptToNoise")) << "noisy points weigh less by default";
+    EXPECT_TRUE(parameters.getBool("fitVerticesToPoints")) << "the vertices are fitted to the points by default";
 }
 
 // Paper Fig. 1: the scan's skeleton misses the loop, so does the surface; connecting the

@@ -148,4 +148,15 @@ PointList tube(const Polyline& centreCurve, double radius, std::size_t n, std::u
     return points;
 }
 
+double meanDistanceToCylinderWall(const PointList& points, double radius, double fromZ, double toZ) {
+    double sum = 0;
+    int count = 0;
+    for (const Point& v : points) {
+        if (v.z() < fromZ || v.z() > toZ) continue;
+        sum += std::abs(std::hypot(v.x(), v.y()) - radius);
+        ++count;
+    }
+    return count ? sum / count : 1e9;
+}
+
 }  // namespace pcskeleton::shapes

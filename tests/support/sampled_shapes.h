@@ -48,4 +48,8 @@ PointList withoutSector(const PointList& points, const Point& centre, double fro
 // Distance from p to the nearest segment.
 double distanceToCurve(const Point& p, const Polyline& curve);
 
+// Mean distance of the points with fromZ <= z <= toZ (a surface's vertices away from its
+// ends) to the wall of the cylinder of `radius` around the z axis; 1e9 if there are none.
+double meanDistanceToCylinderWall(const PointList& points, double radius, double fromZ, double toZ);
+
 }  // namespace pcskeleton::shapes

@@ -24,18 +24,6 @@ PointList squareScan(std::size_t n, double sigma, std::uint32_t seed) {
     return points;
 }
 
-// Mean distance of the surface's vertices to the cylinder wall (radius `radius` around the
-// z axis), away from its caps.
-double meanDistanceToWall(const TriangleMesh& mesh, double radius, double fromZ, double toZ) {
-    double sum = 0;
-    int count = 0;
-    for (const Point& v : mesh.vertices) {
-        if (v.z() < fromZ || v.z() > toZ) continue;
-        sum += std::abs(std::hypot(v.x(), v.y()) - radius);
-        ++count;
-    }
-    return count ? sum / count : 1e9;
-}
 
 }  // namespace
 
@@ -75,8 +63,8 @@ TEST(PointWeights, ANoisyTubesSurfaceStaysCloserToItsWall) {
     EXPECT_DOUBLE_EQ(uniform.report.surfaceWeightShare, 1.0);
     EXPECT_EQ(adapted.report.topology.genus, 0);
     EXPECT_EQ(adapted.report.topology.components, 1);
-    const double adaptedDistance = meanDistanceToWall(adapted.mesh, 0.3, 0.4, 1.6);
-    const double uniformDistance = meanDistanceToWall(uniform.mesh, 0.3, 0.4, 1.6);
+    const double adaptedDistance = shapes::meanDistanceToCylinderWall(adapted.mesh.vertices, 0.3, 0.4, 1.6);
+    const double uniformDistance = shapes::meanDistanceToCylinderWall(uniform.mesh.vertices, 0.3, 0.4, 1.6);
     EXPECT_LT(adaptedDistance, 0.9 * uniformDistance) << adaptedDistance << " vs " << uniformDistance;
     std::printf("mean distance to the wall: %.4f adapted, %.4f uniform\n", adaptedDistance, uniformDistance);
 }

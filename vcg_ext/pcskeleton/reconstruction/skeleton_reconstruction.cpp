@@ -343,6 +343,10 @@ Reconstruction reconstructFromSkeleton(const PointList& points, const SkeletonGr
         throw InvalidInput("The field has no zero crossing: no surface was found. The skeleton radii must be close to "
                            "the shape's thickness.",
                            {Remedy::take(Step::SetNodeRadii), Remedy::raise(Parameter::SurfaceWeight)});
+    if (parameters.fitVerticesToPoints) {
+        summary.verticesFitted = true;
+        summary.vertexFitting = fitVerticesToPoints(result.mesh, framePoints, grid.spacing);
+    }
     for (Point& v : result.mesh.vertices) v = frame.toInput(v);
     summary.topology = analyseSurface(result.mesh);
     const SkeletonTopology wanted = analyseTopology(skeleton.nodeCount(), skeleton.edges);
@@ -378,6 +382,9 @@ std::string describeFindings(const ReconstructionReport& r) {
     if (r.topologyControlled)
         text << "\ntopology: the skeleton's, " << r.removedNodes << " of the fit's " << r.insideNodes
              << " inside grid nodes cut away";
+    if (r.verticesFitted)
+        text << "\nfit to the points: " << r.vertexFitting.moved << " vertices moved, by " << r.vertexFitting.meanMove
+             << " cells on average";
     return text.str();
 }
 

@@ -16,6 +16,7 @@
 #pragma once
 
 #include "pcskeleton/reconstruction/iso_surface.h"
+#include "pcskeleton/reconstruction/vertex_fitting.h"
 #include "pcskeleton/core/advice.h"
 #include "pcskeleton/core/progress.h"
 #include "pcskeleton/skeleton/skeleton_graph.h"
@@ -44,11 +45,15 @@ struct ReconstructionParameters {
     // from 1.68% to 1.13% of the diagonal, with 1% from 0.43% to 0.40%; clean, scanned
     // and misaligned cases and every topology are unchanged.
     bool adaptToNoise = true;
+    // Where data exists the surface's vertices move onto a local fit of the points
+    // (vertex_fitting.h), by at most a cell. false: the zero level set as it is.
+    bool fitVerticesToPoints = true;
 
-    // The paper's plain fit: no topology guarantee, every point weighing w2.
+    // The paper's plain fit: no topology guarantee, every point weighing w2, the level set as it is.
     void keepToThePaper() {
         keepSkeletonTopology = false;
         adaptToNoise = false;
+        fitVerticesToPoints = false;
     }
 };
 
@@ -84,6 +89,8 @@ struct ReconstructionReport {
     SurfaceTopology topology;
     bool topologyControlled = false;
     std::size_t insideNodes = 0, removedNodes = 0;  // the fit's inside, and what was cut from it
+    bool verticesFitted = false;
+    VertexFittingReport vertexFitting;
     std::vector<ReconstructionWarning> warnings;  // things the user should look at
 };
 // Several lines for a log: grid, unknowns, solver, time, topology of the result.
