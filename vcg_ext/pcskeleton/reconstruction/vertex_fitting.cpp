@@ -10,8 +10,13 @@ namespace pcskeleton {
 
 namespace {
 
-// Enough neighbours for the six coefficients of a quadric to average the noise.
-constexpr int kFitNeighbours = 24;
+// Few neighbours follow a clean surface's curvature closely; over noise, more average it
+// (bench_surface: 16 against 40 neighbours gave 0.021 against 0.040% of the diagonal on
+// clean scans, 0.355 against 0.279 with 1% noise). The noisy fit is used where the clean
+// one's points scatter off it by more than a quarter cell.
+constexpr int kCleanNeighbours = 16;
+constexpr int kNoisyNeighbours = 40;
+constexpr double kNoisyResidual = 0.25;  // cells
 constexpr double kDataReach = 1.5;    // cells: no input point nearer, no data here
 constexpr double kLargestMove = 1.0;  // cells
 // The points' plane and the surface's normal may differ by up to 45 degrees.
@@ -31,7 +36,7 @@ PointList vertexNormals(const TriangleMesh& mesh) {
 
 VertexFittingReport fitVerticesToPoints(TriangleMesh& mesh, const PointList& points, double cell) {
     VertexFittingReport report;
-    if (points.size() < std::size_t(kFitNeighbours) || !(cell > 0)) return report;
+    if (points.size() < std::size_t(kNoisyNeighbours) || !(cell > 0)) return report;
     const PointIndex index(points);
     const PointList normals = vertexNormals(mesh);
     std::vector<double> move(mesh.vertices.size(), 0.0);
@@ -42,9 +47,13 @@ VertexFittingReport fitVerticesToPoints(TriangleMesh& mesh, const PointList& poi
 #pragma omp for schedule(static)
         for (long i = 0; i < long(mesh.vertices.size()); ++i) {
             const Point& v = mesh.vertices[std::size_t(i)];
-            index.nearest(v, kFitNeighbours, found);
+            index.nearest(v, kCleanNeighbours, found);
             if (found.empty() || (points[std::size_t(found.front())] - v).norm() > kDataReach * cell) continue;
-            const LocalQuadric quadric = fitLocalQuadric(points, found);
+            LocalQuadric quadric = fitLocalQuadric(points, found);
+            if (quadric.residual > kNoisyResidual * cell) {
+                index.nearest(v, kNoisyNeighbours, found);
+                quadric = fitLocalQuadric(points, found);
+            }
             const Point normal = quadric.plane.axes.col(0);
             const Point surfaceNormal = normals[std::size_t(i)].normalized();
             if (!surfaceNormal.allFinite() || std::abs(normal.dot(surfaceNormal)) < kLeastNormalAgreement) continue;
