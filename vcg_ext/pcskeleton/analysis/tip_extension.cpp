@@ -16,10 +16,10 @@ constexpr double kEndDensityShare = 0.4;
 constexpr std::size_t kFewestForDensity = 20;
 
 // Where the limb ends along its axis, from the sorted offsets along it of the points of
-// its end within its tube. A tube and a round cap have the same density of points along their axis
-// (Archimedes' hat-box), so on a clean limb the density stays level up to the last point;
-// noise blurs that end into a tail, with points up to two or three deviations beyond it,
-// which the farthest point would follow out of the shape. The density over the tip (the
+// its end within its tube. A tube and a round cap have the same density of points along
+// their axis (Archimedes' hat-box), so on a clean limb the density stays level up to the
+// last point; noise blurs that end into a tail, with points up to two or three deviations
+// beyond it, which the farthest point would follow out of the shape. The density over the tip (the
 // middle half of its offsets) is compared, from the far end inwards, with the density in
 // a window of +-`window` around each point: the first point where it is at least
 // kEndDensityShare of the tip's is the end (about a quarter deviation past the true end

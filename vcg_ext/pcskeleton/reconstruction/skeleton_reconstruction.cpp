@@ -385,6 +385,8 @@ std::string describeFindings(const ReconstructionReport& r) {
     if (r.verticesFitted)
         text << "\nfit to the points: " << r.vertexFitting.moved << " vertices moved, by " << r.vertexFitting.meanMove
              << " cells on average";
+    if (r.verticesFitted && r.vertexFitting.undone > 0)
+        text << " (" << r.vertexFitting.undone << " moves undone: they turned a triangle over)";
     return text.str();
 }
 

@@ -22,11 +22,16 @@ constexpr double kLargestMove = 1.0;  // cells
 // The points' plane and the surface's normal may differ by up to 45 degrees.
 constexpr double kLeastNormalAgreement = 0.7071;
 
-// Area-weighted normals of the vertices (unnormalised: the sums of their triangles' cross products).
+// Twice the triangle's area along its normal.
+Point triangleNormal(const TriangleMesh& mesh, const std::array<int, 3>& t) {
+    return (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]);
+}
+
+// Area-weighted normals of the vertices (unnormalised: the sums of their triangles').
 PointList vertexNormals(const TriangleMesh& mesh) {
     PointList normals(mesh.vertices.size(), Point::Zero());
     for (const auto& t : mesh.triangles) {
-        const Point n = (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]);
+        const Point n = triangleNormal(mesh, t);
         for (int v : t) normals[std::size_t(v)] += n;
     }
     return normals;
@@ -73,9 +78,7 @@ VertexFittingReport fitVerticesToPoints(TriangleMesh& mesh, const PointList& poi
     for (bool undone = true; undone;) {
         undone = false;
         for (const auto& t : mesh.triangles) {
-            const Point was = (before.vertices[t[1]] - before.vertices[t[0]]).cross(before.vertices[t[2]] - before.vertices[t[0]]);
-            const Point is = (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]);
-            if (was.dot(is) > 0) continue;
+            if (triangleNormal(before, t).dot(triangleNormal(mesh, t)) > 0) continue;
             for (int v : t) {
                 if (move[std::size_t(v)] == 0.0) continue;
                 move[std::size_t(v)] = 0.0;
