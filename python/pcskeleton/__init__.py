@@ -87,7 +87,7 @@ _SKELETON_HELP = [
     ("memory_limit", "refuse, before any work, a run needing more than this many GB; None = 80% of the machine."),
 ]
 _RECONSTRUCTION_HELP = [
-    ("paper", "the paper's plain fit with uniform point weights."),
+    ("paper", "the paper's plain fit with uniform point weights and the zero level set as it is."),
     ("resolution", "grid cells along the longest side of the domain (16-512)."),
     ("smooth_weight", "w1, smoothness of the field."),
     ("surface_weight", "w2, the surface passes through the points."),
