@@ -39,7 +39,8 @@ struct FieldProblem {
 };
 
 struct FieldSolverOptions {
-    double tolerance = 1e-6;  // on the residual relative to the right-hand side
+    double tolerance = 1e-5;  // on the residual relative to the right-hand side (bench_reconstruction,
+                              // bench_surface: 1e-6 took 3 more iterations for the same surfaces)
     int maxIterations = 100;
 };
 
