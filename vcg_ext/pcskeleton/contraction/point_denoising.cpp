@@ -2,6 +2,7 @@
 
 #include "pcskeleton/core/errors.h"
 #include "pcskeleton/internal/local_plane.h"
+#include "pcskeleton/internal/median.h"
 #include "pcskeleton/internal/spatial_index.h"
 
 #include <Eigen/Eigenvalues>
@@ -29,8 +30,7 @@ double surfaceNoise(const PointList& points, int neighbours) {
     }
     ratios.erase(std::remove(ratios.begin(), ratios.end(), -1.0), ratios.end());
     if (ratios.empty()) return 0.0;
-    std::nth_element(ratios.begin(), ratios.begin() + long(ratios.size() / 2), ratios.end());
-    return ratios[ratios.size() / 2];
+    return median(std::move(ratios));
 }
 
 DenoisingChoice chooseDenoising(const PointList& points, int neighbours, int requested) {

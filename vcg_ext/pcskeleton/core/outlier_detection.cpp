@@ -3,6 +3,7 @@
 #include "pcskeleton/core/errors.h"
 
 #include "pcskeleton/internal/disjoint_sets.h"
+#include "pcskeleton/internal/median.h"
 #include "pcskeleton/internal/spatial_index.h"
 
 #include <algorithm>
@@ -16,12 +17,6 @@ namespace {
 // does not make look dense.
 constexpr int kNeighbours = 8;
 constexpr int kLocalPasses = 4;
-
-double median(std::vector<double> values) {
-    const auto middle = values.begin() + std::ptrdiff_t(values.size() / 2);
-    std::nth_element(values.begin(), middle, values.end());
-    return *middle;
-}
 
 }  // namespace
 

@@ -1,6 +1,7 @@
 #include "pcskeleton/reconstruction/skeleton_reconstruction.h"
 
 #include "pcskeleton/internal/machine_memory.h"
+#include "pcskeleton/internal/median.h"
 #include "pcskeleton/internal/stopwatch.h"
 #include "pcskeleton/reconstruction/field_fitting.h"
 #include "pcskeleton/reconstruction/point_weights.h"
@@ -323,9 +324,7 @@ Reconstruction reconstructFromSkeleton(const PointList& points, const SkeletonGr
         summary.removedNodes = control.removedNodes;
         // A group of cut nodes worth a look: at least a quarter of a typical bone's cross-
         // section (a handle cut across a real tube), not a noise tunnel of a few nodes.
-        std::vector<double> radii = frameSkeleton.radii;
-        std::nth_element(radii.begin(), radii.begin() + radii.size() / 2, radii.end());
-        const double typicalRadius = radii[radii.size() / 2] / grid.spacing;  // in cells
+        const double typicalRadius = median(frameSkeleton.radii) / grid.spacing;  // in cells
         const double worthALook = 0.25 * 3.14159265358979323846 * typicalRadius * typicalRadius;
         if (control.largestRemoval > 0 && double(control.largestRemoval) >= worthALook) {
             const Point where = frame.toInput(control.largestRemovalCentre);

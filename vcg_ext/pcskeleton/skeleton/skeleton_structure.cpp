@@ -1,5 +1,6 @@
 #include "pcskeleton/skeleton/skeleton_structure.h"
 
+#include "pcskeleton/internal/median.h"
 #include "pcskeleton/internal/spatial_index.h"
 
 #include <algorithm>
@@ -93,13 +94,12 @@ bool isSpur(const SkeletonGraph& graph, const Limb& limb, double nodeSpacing) {
 
 std::vector<std::vector<int>> stragglingEnds(const SkeletonGraph& graph,
                                              const std::vector<std::vector<int>>& nodePoints, double nodeSpacing) {
-    std::vector<std::size_t> counts;
+    std::vector<double> counts;
     for (const std::vector<int>& owned : nodePoints) {
-        if (!owned.empty()) counts.push_back(owned.size());
+        if (!owned.empty()) counts.push_back(double(owned.size()));
     }
     if (counts.empty()) return {};
-    std::nth_element(counts.begin(), counts.begin() + counts.size() / 2, counts.end());
-    const double fewest = kStragglerShare * double(counts[counts.size() / 2]);
+    const double fewest = kStragglerShare * median(counts);
     const auto owns = [&](int n) { return double(nodePoints[n].size()); };
 
     std::vector<std::vector<int>> ends;
@@ -240,8 +240,7 @@ bool boneGrazesSurface(const SkeletonGraph& graph, const Edge& bone, const Point
         index.nearest(nearby[i], 2, found);
         spacings.push_back((nearby[std::size_t(found.back())] - nearby[i]).norm());
     }
-    std::nth_element(spacings.begin(), spacings.begin() + long(spacings.size() / 2), spacings.end());
-    if (spacings[spacings.size() / 2] > kCoarsestJudgedSpacing * radius) return false;
+    if (median(spacings) > kCoarsestJudgedSpacing * radius) return false;
 
     const Point& a = graph.nodes[bone[0]];
     const Point& b = graph.nodes[bone[1]];
