@@ -22,16 +22,16 @@ constexpr double kLargestMove = 1.0;  // cells
 // The points' plane and the surface's normal may differ by up to 45 degrees.
 constexpr double kLeastNormalAgreement = 0.7071;
 
-// Twice the triangle's area along its normal.
-Point triangleNormal(const TriangleMesh& mesh, const std::array<int, 3>& t) {
-    return (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]);
+// Twice the triangle's area along its normal, its corners taken from `vertices`.
+Point triangleNormal(const PointList& vertices, const std::array<int, 3>& t) {
+    return (vertices[t[1]] - vertices[t[0]]).cross(vertices[t[2]] - vertices[t[0]]);
 }
 
 // Area-weighted normals of the vertices (unnormalised: the sums of their triangles').
 PointList vertexNormals(const TriangleMesh& mesh) {
     PointList normals(mesh.vertices.size(), Point::Zero());
     for (const auto& t : mesh.triangles) {
-        const Point n = triangleNormal(mesh, t);
+        const Point n = triangleNormal(mesh.vertices, t);
         for (int v : t) normals[std::size_t(v)] += n;
     }
     return normals;
@@ -73,16 +73,16 @@ VertexFittingReport fitVerticesToPoints(TriangleMesh& mesh, const PointList& poi
     }
     // A move that turns a triangle over is undone (with those of the triangle's other
     // vertices), until no triangle is turned: the surface may not fold onto itself.
-    const TriangleMesh before = mesh;
+    const PointList before = mesh.vertices;
     for (std::size_t i = 0; i < mesh.vertices.size(); ++i) mesh.vertices[i] += move[i] * direction[i];
     for (bool undone = true; undone;) {
         undone = false;
         for (const auto& t : mesh.triangles) {
-            if (triangleNormal(before, t).dot(triangleNormal(mesh, t)) > 0) continue;
+            if (triangleNormal(before, t).dot(triangleNormal(mesh.vertices, t)) > 0) continue;
             for (int v : t) {
                 if (move[std::size_t(v)] == 0.0) continue;
                 move[std::size_t(v)] = 0.0;
-                mesh.vertices[std::size_t(v)] = before.vertices[std::size_t(v)];
+                mesh.vertices[std::size_t(v)] = before[std::size_t(v)];
                 undone = true;
                 ++report.undone;
             }
