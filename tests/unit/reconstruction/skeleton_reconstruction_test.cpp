@@ -225,6 +225,32 @@ TEST(Reconstruction, BonesPassingCloseKeepBothLoopsOfTheEight) {
     EXPECT_EQ(result.report.removedNodes, 0u) << "the data has both loops too: nothing to cut";
 }
 
+// A loop of the skeleton far smaller than a grid cell cannot be carried by the surface:
+// the report says the topology was held where the grid allows and why, not "the skeleton's".
+TEST(Reconstruction, ALoopSmallerThanACellIsReportedNotClaimed) {
+    SkeletonGraph skeleton = ringSkeleton();
+    const int base = int(skeleton.nodes.size());
+    const Point at = skeleton.nodes[0];
+    for (int c = 0; c < 3; ++c) {
+        const double a = 2 * kPi * c / 3;
+        skeleton.nodes.push_back(at + Point(0, 0.01 * std::cos(a), 0.01 * std::sin(a)));
+        skeleton.radii.push_back(0.3);
+    }
+    skeleton.edges.push_back({0, base});
+    skeleton.edges.push_back({base, base + 1});
+    skeleton.edges.push_back({base + 1, base + 2});
+    skeleton.edges.push_back({base, base + 2});
+    normalizeEdges(skeleton.edges);
+    const Reconstruction result = reconstructFromSkeleton(torusScanWithGap(), skeleton, atResolution(48));
+    ASSERT_EQ(result.report.topology.genus, 1) << describe(result.report);
+    EXPECT_TRUE(std::any_of(result.report.warnings.begin(), result.report.warnings.end(), [](const ReconstructionWarning& w) {
+        return w.kind == ReconstructionWarning::Kind::TopologyDiffersFromSkeleton;
+    }));
+    const std::string findings = describeFindings(result.report);
+    EXPECT_NE(findings.find("topology: held to the skeleton's where the grid allows"), std::string::npos) << findings;
+    EXPECT_EQ(findings.find("topology: the skeleton's,"), std::string::npos) << findings;
+}
+
 TEST(Reconstruction, DoubleTorusGivesGenusTwo) {
     // Two rings whose tubes overlap between them: a figure-eight skeleton.
     shapes::Polyline curve = shapes::circle(Point(-1.15, 0, 0), 1.0, 24);

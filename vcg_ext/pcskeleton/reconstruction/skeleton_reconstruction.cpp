@@ -378,9 +378,13 @@ std::string describeFindings(const ReconstructionReport& r) {
          << "time: setup " << r.setupSeconds << " s, solve " << r.solveSeconds << " s, surface "
          << r.extractionSeconds << " s\n"
          << "result: " << describe(r.topology);
-    if (r.topologyControlled)
-        text << "\ntopology: the skeleton's, " << r.removedNodes << " of the fit's " << r.insideNodes
-             << " inside grid nodes cut away";
+    if (r.topologyControlled) {
+        const bool reached = std::none_of(r.warnings.begin(), r.warnings.end(), [](const ReconstructionWarning& w) {
+            return w.kind == ReconstructionWarning::Kind::TopologyDiffersFromSkeleton;
+        });
+        text << "\ntopology: " << (reached ? "the skeleton's" : "held to the skeleton's where the grid allows (see the warning)")
+             << ", " << r.removedNodes << " of the fit's " << r.insideNodes << " inside grid nodes cut away";
+    }
     if (r.verticesFitted)
         text << "\nfit to the points: " << r.vertexFitting.moved << " vertices moved, by " << r.vertexFitting.meanMove
              << " cells on average";
