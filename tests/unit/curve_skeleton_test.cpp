@@ -180,10 +180,26 @@ TEST(CurveSkeleton, SamplingRadiusMustBeAFraction) {
     EXPECT_THROW(computeCurveSkeleton(shapes::sphere(500, 1.0), p), InvalidInput);
 }
 
+// A scan of bench_robustness's suite as `--write` saves it, from tests/data/scans.
+PointList savedScan(const std::string& file) { return readPointCloud(std::string(PCSKELETON_SCANS_DIR) + "/" + file); }
+
+// bench_robustness's libcgal-demo knot (one loop) with 0.5% noise, as `--write` saves it:
+// at a crossing, three points of the two strands' facing walls were pulled into the gap
+// between them and made a node that joined the strands, a second loop.
+TEST(CurveSkeleton, AKnotWithLittleNoiseKeepsItsOneLoop) {
+    const PointList scan = savedScan("knot_noise05_6000.ply");
+    const SkeletonQuality q = computeCurveSkeleton(scan).quality;
+    EXPECT_EQ(q.refinement.bridgesCut, 1) << describe(q.refinement);
+    EXPECT_TRUE(q.topology.cycles == 1 && q.topology.tips == 0 && q.topology.components == 1) << describe(q.topology);
+    SkeletonParameters unrefined;
+    unrefined.thinning.refine = false;
+    EXPECT_EQ(computeCurveSkeleton(scan, unrefined).quality.topology.cycles, 2);
+}
+
 // bench_robustness's three rings (genus 3) with 1% noise, as `--write` saves it: noise
 // joins two rings across their narrow gap, a loop the refinement opens.
 TEST(CurveSkeleton, NoisyThreeRingsKeepTheirThreeLoopsOnly) {
-    const PointList scan = readPointCloud(std::string(PCSKELETON_SCANS_DIR) + "/three_rings_noise1_6000.ply");
+    const PointList scan = savedScan("three_rings_noise1_6000.ply");
     const SkeletonResult r = computeCurveSkeleton(scan);
     EXPECT_EQ(r.quality.topology.cycles, 3) << describe(r.quality.topology);
     EXPECT_EQ(r.quality.topology.components, 1) << describe(r.quality.topology);

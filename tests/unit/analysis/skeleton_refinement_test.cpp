@@ -78,6 +78,51 @@ TEST(SkeletonRefinement, TrimsStragglingEndsButNotThinLimbs) {
     EXPECT_NE(report.nodeMap[thin], report.nodeMap[3]) << "the thin limb stays";
 }
 
+namespace {
+
+// A ring of 24 nodes, each owning 20 points, with a path of `pathNodes` nodes owning
+// `pointsEach` points each across it, from node 0 to node 8.
+SkeletonGraph ringWithPathAcross(int pathNodes, int pointsEach, std::vector<int>& path) {
+    SkeletonGraph g = shapes::curveSkeleton(shapes::circle(Point::Zero(), 1.0, 24), 0.05);
+    for (int node = 0; node < int(g.nodeCount()); ++node) g.pointNode.insert(g.pointNode.end(), 20, node);
+    int previous = 0;
+    for (int step = 1; step <= pathNodes; ++step) {
+        const double t = double(step) / (pathNodes + 1);
+        previous = addNode(g, (1 - t) * g.nodes[0] + t * g.nodes[8], previous);
+        g.pointNode.insert(g.pointNode.end(), std::size_t(pointsEach), previous);
+        path.push_back(previous);
+    }
+    g.edges.push_back({8, previous});
+    normalizeEdges(g.edges);
+    return g;
+}
+
+}  // namespace
+
+TEST(SkeletonRefinement, CutsAStrayBridgeButNotAThinHandle) {
+    // One node of one point joining two parts of the ring: points pulled into a gap.
+    std::vector<int> stray;
+    SkeletonGraph bridged = ringWithPathAcross(1, 1, stray);
+    ASSERT_EQ(bridged.nodeCount(), 25u);
+    ASSERT_EQ(invariantViolation(bridged), "");
+    ASSERT_EQ(analyseTopology(bridged).cycles, 2);
+    const RefinementReport report = refineSkeleton(bridged, {}, kSpacing);
+    EXPECT_EQ(invariantViolation(bridged), "");
+    EXPECT_EQ(report.bridgesCut, 1) << describe(report);
+    EXPECT_NE(describe(report).find(", 1 stray bridge,"), std::string::npos) << describe(report);
+    EXPECT_EQ(analyseTopology(bridged).cycles, 1);
+    EXPECT_EQ(analyseTopology(bridged).tips, 0) << "the bridge's node went to the junction it hung from";
+    EXPECT_EQ(report.nodeMap[stray[0]], report.nodeMap[0]);
+    EXPECT_TRUE(bridged.nodes[report.nodeMap[0]].isApprox(Point(1, 0, 0))) << "the junction keeps its place";
+
+    // A thin handle: one point per node too, but four in all (a fifth of the median node's).
+    std::vector<int> thin;
+    SkeletonGraph handle = ringWithPathAcross(4, 1, thin);
+    const RefinementReport kept = refineSkeleton(handle, {}, kSpacing);
+    EXPECT_EQ(kept.bridgesCut, 0) << describe(kept);
+    EXPECT_EQ(analyseTopology(handle).cycles, 2);
+}
+
 TEST(SkeletonRefinement, LeavesACleanSkeletonAlone) {
     SkeletonGraph ring = shapes::curveSkeleton(shapes::circle(Point::Zero(), 1.0, 24), 0.3);
     const SkeletonGraph before = ring;

@@ -109,6 +109,23 @@ int cutContactLoops(SkeletonGraph& skeleton, const PointList& points, const Narr
     return cuts;
 }
 
+// A stray bridge (skeleton_structure.h) is cut at its far end, and its nodes (a handful
+// of points) are absorbed into the junction it then hangs from, which keeps its place.
+// One at a time: a cut may leave the next bridge the only way between its parts.
+std::vector<NodeGroup> strayBridgeGroups(SkeletonGraph& skeleton) {
+    normalizeEdges(skeleton.edges);  // sorted, for the search below
+    for (std::vector<int>& bridge : strayBridges(skeleton, pointsOfNodes(skeleton))) {
+        const Edge farEnd{std::min(bridge[bridge.size() - 2], bridge.back()), std::max(bridge[bridge.size() - 2], bridge.back())};
+        const auto bone = std::lower_bound(skeleton.edges.begin(), skeleton.edges.end(), farEnd);
+        if (bone == skeleton.edges.end() || *bone != farEnd) continue;
+        skeleton.edges.erase(bone);
+        bridge.pop_back();
+        const int junction = bridge.front();
+        return {{std::move(bridge), junction}};
+    }
+    return {};
+}
+
 std::vector<NodeGroup> closeJunctionGroups(const SkeletonGraph& skeleton, double nodeSpacing) {
     std::vector<NodeGroup> groups;
     for (std::vector<int>& path : closeJunctionPaths(skeleton, nodeSpacing)) groups.push_back({std::move(path), -1});
@@ -121,7 +138,8 @@ std::string describe(const RefinementReport& r) {
     return "removed " + counted(std::size_t(r.spursRemoved), "spur") + ", trimmed " +
            counted(std::size_t(r.endsTrimmed), "straggling end") + ", collapsed " +
            counted(std::size_t(r.cyclesCollapsed), "small loop") + ", cut " +
-           counted(std::size_t(r.cyclesCut), "narrow loop") + ", merged " +
+           counted(std::size_t(r.cyclesCut), "narrow loop") + ", " + counted(std::size_t(r.bridgesCut), "stray bridge") +
+           ", merged " +
            counted(std::size_t(r.junctionsMerged), "pair") + " of close junctions";
 }
 
@@ -140,13 +158,15 @@ RefinementReport refineSkeleton(SkeletonGraph& skeleton, const PointList& points
         const int ends = merge(stragglingEndGroups(skeleton, nodeSpacing));
         const int cycles = merge(spuriousCycleGroups(skeleton, nodeSpacing));
         const int cuts = pass == 0 ? cutContactLoops(skeleton, points, narrowLoops) : 0;
+        const int bridges = merge(strayBridgeGroups(skeleton));
         const int junctions = merge(closeJunctionGroups(skeleton, nodeSpacing));
         report.spursRemoved += spurs;
         report.endsTrimmed += ends;
         report.cyclesCollapsed += cycles;
         report.cyclesCut += cuts;
+        report.bridgesCut += bridges;
         report.junctionsMerged += junctions;
-        if (spurs + ends + cycles + cuts + junctions == 0) break;
+        if (spurs + ends + cycles + cuts + bridges + junctions == 0) break;
     }
     return report;
 }

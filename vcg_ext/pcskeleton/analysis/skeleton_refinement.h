@@ -10,6 +10,8 @@
 //    A loop whose opening is narrower than its tube, and whose most stretched bone (its
 //    nodes' balls do not meet) passes through the surface, is two parts that touch or
 //    that noise joined: it is opened at that bone (skeleton_structure.h, contactLoops).
+//    A stray bridge (a path between junctions, on a loop, whose nodes own a handful of
+//    points) is cut, and its nodes are absorbed as a straggling end.
 // 3. Junctions joined by a path shorter than the node spacing merge into one node at the
 //    path's centre.
 // Repeated until nothing changes, since each step can expose more. Merged nodes keep all
@@ -25,15 +27,15 @@
 namespace pcskeleton {
 
 struct RefinementReport {
-    int spursRemoved = 0, endsTrimmed = 0, cyclesCollapsed = 0, cyclesCut = 0, junctionsMerged = 0;
+    int spursRemoved = 0, endsTrimmed = 0, cyclesCollapsed = 0, cyclesCut = 0, bridgesCut = 0, junctionsMerged = 0;
     std::vector<int> nodeMap;  // per node of the skeleton given: the node it became
     bool changedAnything() const {
-        return spursRemoved + endsTrimmed + cyclesCollapsed + cyclesCut + junctionsMerged > 0;
+        return spursRemoved + endsTrimmed + cyclesCollapsed + cyclesCut + bridgesCut + junctionsMerged > 0;
     }
 };
 
 // "removed 2 spurs, trimmed 0 straggling ends, collapsed 1 small loop, cut 0 narrow loops,
-// merged 0 pairs of close junctions"
+// 0 stray bridges, merged 0 pairs of close junctions"
 std::string describe(const RefinementReport& report);
 
 // `nodeSpacing` is the thinning radius, in the skeleton's units; `points` its input points

@@ -22,6 +22,15 @@ constexpr double kStragglerShare = 0.1;
 
 double boneLength(const SkeletonGraph& graph, int a, int b) { return (graph.nodes[a] - graph.nodes[b]).norm(); }
 
+// The median number of points of the nodes that own any (0 when none does).
+double medianPointsPerNode(const std::vector<std::vector<int>>& nodePoints) {
+    std::vector<double> counts;
+    for (const std::vector<int>& owned : nodePoints) {
+        if (!owned.empty()) counts.push_back(double(owned.size()));
+    }
+    return counts.empty() ? 0.0 : median(std::move(counts));
+}
+
 // Walks from `from` into `next` and on through nodes of degree 2; returns the nodes passed,
 // `from` first, ending at the first node whose degree is not 2 (or back at `from` on a
 // cycle without junctions).
@@ -34,6 +43,21 @@ std::vector<int> walkChain(const std::vector<std::vector<int>>& neighbours, int 
         const int ahead = neighbours[current][0] == previous ? neighbours[current][1] : neighbours[current][0];
         previous = current, current = ahead;
     }
+}
+
+// The paths through nodes of degree 2 from a junction to another junction, each once
+// (from its lower-numbered junction); a path back to its own junction is not one.
+std::vector<std::vector<int>> junctionToJunctionPaths(const std::vector<std::vector<int>>& neighbours) {
+    std::vector<std::vector<int>> paths;
+    for (std::size_t junction = 0; junction < neighbours.size(); ++junction) {
+        if (neighbours[junction].size() < 3) continue;
+        for (int next : neighbours[junction]) {
+            std::vector<int> path = walkChain(neighbours, int(junction), next);
+            const int end = path.back();
+            if (end > int(junction) && neighbours[end].size() >= 3) paths.push_back(std::move(path));
+        }
+    }
+    return paths;
 }
 
 // Shortest path by bone length from `source` to `target` without the bone source-target;
@@ -94,12 +118,8 @@ bool isSpur(const SkeletonGraph& graph, const Limb& limb, double nodeSpacing) {
 
 std::vector<std::vector<int>> stragglingEnds(const SkeletonGraph& graph,
                                              const std::vector<std::vector<int>>& nodePoints, double nodeSpacing) {
-    std::vector<double> counts;
-    for (const std::vector<int>& owned : nodePoints) {
-        if (!owned.empty()) counts.push_back(double(owned.size()));
-    }
-    if (counts.empty()) return {};
-    const double fewest = kStragglerShare * median(counts);
+    const double fewest = kStragglerShare * medianPointsPerNode(nodePoints);
+    if (!(fewest > 0)) return {};
     const auto owns = [&](int n) { return double(nodePoints[n].size()); };
 
     std::vector<std::vector<int>> ends;
@@ -120,6 +140,21 @@ std::vector<std::vector<int>> stragglingEnds(const SkeletonGraph& graph,
         if (near) ends.emplace_back(limb.path.begin(), keeper + 1);
     }
     return ends;
+}
+
+std::vector<std::vector<int>> strayBridges(const SkeletonGraph& graph, const std::vector<std::vector<int>>& nodePoints) {
+    const double fewest = kStragglerShare * medianPointsPerNode(nodePoints);
+    const auto neighbours = adjacencyLists(graph.nodeCount(), graph.edges);
+    std::vector<std::vector<int>> bridges;
+    for (std::vector<int>& path : junctionToJunctionPaths(neighbours)) {
+        if (path.size() < 3) continue;
+        double innerPoints = 0.0;
+        for (std::size_t i = 1; i + 1 < path.size(); ++i) innerPoints += double(nodePoints[path[i]].size());
+        if (innerPoints >= fewest) continue;
+        // On a loop: the junctions stay joined without the path.
+        if (!shortestDetour(graph, neighbours, path[0], path[1]).empty()) bridges.push_back(std::move(path));
+    }
+    return bridges;
 }
 
 bool isRedundantLimb(const SkeletonGraph& graph, const Limb& limb, const PointList& points,
@@ -280,17 +315,9 @@ Edge mostStretchedBone(const SkeletonGraph& graph, const std::vector<int>& cycle
 }
 
 std::vector<std::vector<int>> closeJunctionPaths(const SkeletonGraph& graph, double nodeSpacing) {
-    const auto neighbours = adjacencyLists(graph.nodeCount(), graph.edges);
     std::vector<std::vector<int>> paths;
-    for (std::size_t junction = 0; junction < graph.nodeCount(); ++junction) {
-        if (neighbours[junction].size() < 3) continue;
-        for (int next : neighbours[junction]) {
-            std::vector<int> path = walkChain(neighbours, int(junction), next);
-            const int end = path.back();
-            // Each path once: from its lower-numbered junction.
-            if (end <= int(junction) || neighbours[end].size() < 3) continue;
-            if (pathLength(graph, path) < nodeSpacing) paths.push_back(std::move(path));
-        }
+    for (std::vector<int>& path : junctionToJunctionPaths(adjacencyLists(graph.nodeCount(), graph.edges))) {
+        if (pathLength(graph, path) < nodeSpacing) paths.push_back(std::move(path));
     }
     return paths;
 }

@@ -46,6 +46,15 @@ bool isSpur(const SkeletonGraph& graph, const Limb& limb, double nodeSpacing);
 std::vector<std::vector<int>> stragglingEnds(const SkeletonGraph& graph,
                                              const std::vector<std::vector<int>>& nodePoints, double nodeSpacing);
 
+// Stray bridges: paths between two junctions whose inner nodes together own fewer than a
+// tenth of the points of the skeleton's median node (the share stragglingEnds uses), and
+// that lie on a loop. Where two parts pass close by (the strands of a knot at a crossing,
+// scans misaligned across a gap), contraction pulls the few points of their facing walls
+// into the gap, and thinning strings them into a node or two that joins the parts: a
+// false loop. A real handle, however thin, has more points than that. Each path is given
+// from junction to junction; a path without inner nodes is not judged.
+std::vector<std::vector<int>> strayBridges(const SkeletonGraph& graph, const std::vector<std::vector<int>>& nodePoints);
+
 // `points` are the skeleton's input points (graph.pointNode's), `nodePoints` their lists
 // per node (pointsOfNodes); false for a limb without points or not at a junction.
 bool isRedundantLimb(const SkeletonGraph& graph, const Limb& limb, const PointList& points,
