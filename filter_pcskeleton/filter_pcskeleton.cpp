@@ -130,7 +130,8 @@ void addThinningParameters(RichParameterList& list) {
         "separate objects get joined; 0 joins nothing, as in the paper."));
     list.addParam(RichBool("extendTips", d.extendTips, "Extend tips to the shape's ends",
         "Contraction pulls the ends of limbs inwards, so the skeleton stops short of them. This extends every "
-        "limb (not the short spurs) along its direction to the farthest of its tip's points, with a new end node. "
+        "limb (not the short spurs) along its direction to where its tip's points end (where their density "
+        "along it falls), with a new end node. "
         "Turn it off to get the paper's skeleton exactly."));
     list.addParam(RichBool("recentre", d.recentre, "Re-centre nodes of one-sided parts",
         "Where a node's points cover one side of its bone only (a scan from one side, a hole), their centre lies "
@@ -142,6 +143,13 @@ void addThinningParameters(RichParameterList& list) {
         "spacing merge, bridges of a handful of points between parts that pass close are cut. On by default: on "
         "noisy and misaligned scans it removes spurs and false loops. Untick "
         "for the paper's skeleton."));
+    list.addParam(RichFloat("loopOpening", float(d.narrowLoops.minOpening), parameterLabel(Parameter::LoopOpening),
+        "Refinement opens a loop whose hole is narrower than this many tube radii at its bone longest for its "
+        "radii, if that bone passes closer than the clearance below to a point: parts that touch, or that noise "
+        "joined. Lower it if a real narrow hole is lost; 0 opens none."));
+    list.addParam(RichFloat("loopClearance", float(d.narrowLoops.minClearance), parameterLabel(Parameter::LoopClearance),
+        "The fraction of its radius within which that bone must pass a point for the loop to be opened: a bone "
+        "inside a tube keeps about a radius from its wall. Lower it if a real narrow hole is lost."));
     list.addParam(RichBool("addSegmentsLayer", true, "Add a layer of points coloured by node",
         "Adds a copy of the input points, each coloured by the skeleton node it belongs to (the "
         "correspondence), with the node index in the per-vertex attribute pcs_node. The input layer is "
@@ -164,6 +172,8 @@ pcskeleton::ThinningParameters readThinningParameters(const RichParameterList& l
     p.extendTips = list.getBool("extendTips");
     p.recentre = list.getBool("recentre");
     p.refine = list.getBool("refine");
+    p.narrowLoops.minOpening = list.getFloat("loopOpening");
+    p.narrowLoops.minClearance = list.getFloat("loopClearance");
     return p;
 }
 

@@ -23,10 +23,13 @@ QString parameterLabel(Parameter parameter) {
         case Parameter::OutsideDistance: return "Outside distance K (radii)";
         case Parameter::OutlierDetection: return "Detect outliers";
         case Parameter::OutlierIsolation: return "Outlier isolation (spacings)";
+        case Parameter::OutlierLocalFactor: return "Outlier local factor";
         case Parameter::OutlierClusterShare: return "Outlier cluster share";
         case Parameter::DenoisingPasses: return "Denoising passes";
         case Parameter::LinkLimit: return "Stretched-link limit (node spacings)";
         case Parameter::GapLimit: return "Gap limit (node spacings)";
+        case Parameter::LoopOpening: return "Narrow-loop opening (tube radii)";
+        case Parameter::LoopClearance: return "Narrow-loop clearance (fraction of radius)";
         case Parameter::ContractedPoints: return "the number of contracted points (untick 'Full resolution')";
         case Parameter::SkeletonTopology: return "Keep the skeleton's topology";
     }
@@ -35,8 +38,23 @@ QString parameterLabel(Parameter parameter) {
 
 namespace {
 
+// The limits the dialogs leave out (a dialog taller than the screen hides its Apply
+// button): where a message names one, it says where it is set.
+std::string outsideTheDialogs(Parameter parameter) {
+    switch (parameter) {
+        case Parameter::OutlierIsolation: return "--outlier-isolation";
+        case Parameter::OutlierLocalFactor: return "--outlier-local";
+        case Parameter::OutlierClusterShare: return "--outlier-cluster";
+        default: return {};
+    }
+}
+
 // Quoted, so that a dialog field reads as one in the middle of a sentence.
-std::string quotedLabel(Parameter parameter) { return "'" + parameterLabel(parameter).toStdString() + "'"; }
+std::string quotedLabel(Parameter parameter) {
+    const std::string label = "'" + parameterLabel(parameter).toStdString() + "'";
+    const std::string option = outsideTheDialogs(parameter);
+    return option.empty() ? label : label + " (not in this dialog: pcskeleton " + option + ", or the Python module)";
+}
 
 std::string filterStep(Step step) {
     switch (step) {

@@ -34,8 +34,11 @@ shot point-set-menu
 click 640 486 1.5     # Contract Point Cloud (Laplacian)
 wait_window "Contract Point Cloud \(Laplacian\)" 10
 shot filter-dialog
-click 323 716 4       # Apply
-click 112 716         # Close
+# The dialog's buttons, from its geometry (a new parameter moves them down): Close and
+# Apply share the bottom row.
+eval "$(xdotool search --onlyvisible --name "Contract Point Cloud" getwindowgeometry --shell | tr -d ' ')"
+click $((X + WIDTH * 3 / 4)) $((Y + HEIGHT - 21)) 4   # Apply
+click $((X + WIDTH / 4)) $((Y + HEIGHT - 21))         # Close
 click 472 114         # hide the input layer, to see the result
 click 540 145         # make the contracted layer current
 shot contracted-layer
@@ -73,8 +76,6 @@ click 160 386         # Point Set
 click 640 436 1.5     # Compute Curve Skeleton (Laplacian Contraction)
 wait_window "Compute Curve Skeleton" 10
 shot skeleton-dialog
-# The dialog's buttons, from its geometry (a new parameter moves them down): Close and
-# Apply share the bottom row.
 eval "$(xdotool search --onlyvisible --name "Compute Curve Skeleton" getwindowgeometry --shell | tr -d ' ')"
 click $((X + WIDTH * 3 / 4)) $((Y + HEIGHT - 21)) 5   # Apply
 click $((X + WIDTH / 4)) $((Y + HEIGHT - 21))         # Close

@@ -296,6 +296,30 @@ TEST_F(SkeletonFilterTest, ARefusedParameterIsNamedByItsDialogLabel) {
               "number of node spacings.");
 }
 
+// The narrow-loop limits the CLI and the Python module take are in the dialog too, with
+// help, and a refusal names them by their labels.
+TEST_F(SkeletonFilterTest, NarrowLoopLimitsAreInTheDialog) {
+    QAction* a = action(kSkeletonFilter);
+    const RichParameterList parameters = defaults(a);
+    const pcskeleton::NarrowLoopLimits loops;
+    for (const auto& [name, value] : {std::pair{"loopOpening", loops.minOpening}, std::pair{"loopClearance", loops.minClearance}}) {
+        ASSERT_TRUE(parameters.hasParameter(name)) << name;
+        EXPECT_FLOAT_EQ(parameters.getFloat(name), float(value)) << name;
+        EXPECT_FALSE(parameters.getParameterByName(name).fieldDescription().isEmpty()) << name;
+    }
+    addPointLayer(pcskeleton::shapes::torus(2000, 1.0, 0.25), "torus");
+    RichParameterList p = defaults(a);
+    p.setValue("loopOpening", FloatValue(-1.0f));
+    ASSERT_FALSE(apply(a, p));
+    EXPECT_EQ(plugin->errorMsg().toStdString(),
+              "'Narrow-loop opening (tube radii)' must be 0 (no loop is opened) or a positive number of tube radii.");
+    p = defaults(a);
+    p.setValue("loopClearance", FloatValue(2.0f));
+    ASSERT_FALSE(apply(a, p));
+    EXPECT_EQ(plugin->errorMsg().toStdString(),
+              "'Narrow-loop clearance (fraction of radius)' must be a fraction of a bone's radius between 0 and 1.");
+}
+
 TEST_F(SkeletonFilterTest, TipExtensionAndRefinementAreParametersWithHelp) {
     QAction* a = action(kSkeletonFilter);
     const RichParameterList parameters = defaults(a);
@@ -345,6 +369,28 @@ TEST_F(SkeletonFilterTest, AGapInTheDataIsBridgedUnlessTheGapLimitIsZero) {
     ASSERT_TRUE(apply(a, p)) << plugin->errorMsg().toStdString();
     EXPECT_EQ(topologyOfLayer(*document.mm()).components, 2);
     EXPECT_TRUE(capture.text(GLLogStream::FILTER).contains("Gaps in the data: off."));
+}
+
+// Over 5% of the points set aside, the warning's advice names thresholds the dialog leaves
+// out: it says where they are set instead of sending the user to a field that is not there.
+TEST_F(SkeletonFilterTest, AdviceNamingAThresholdOutsideTheDialogSaysWhereItIsSet) {
+    LogCapture capture(plugin);
+    // 30 tight clumps of 10 points above the torus, each under 1% of the cloud: outlier clusters (7%).
+    pcskeleton::PointList cloud = pcskeleton::shapes::torus(4000, 1.0, 0.3);
+    for (int clump = 0; clump < 30; ++clump) {
+        const double angle = 2 * 3.14159265358979 * clump / 30;
+        for (int i = 0; i < 10; ++i)
+            cloud.emplace_back(1.5 * std::cos(angle) + 0.002 * i, 1.5 * std::sin(angle), 1.0 + 0.003 * (i % 3));
+    }
+    addPointLayer(cloud, "scan");
+    QAction* a = action(kSkeletonFilter);
+    ASSERT_TRUE(apply(a, defaults(a))) << plugin->errorMsg().toStdString();
+    const QString log = capture.text(GLLogStream::WARNING);
+    EXPECT_TRUE(log.contains("300 points (7%) were set aside as outliers")) << log.toStdString();
+    EXPECT_TRUE(log.contains("Raise 'Outlier isolation (spacings)' (not in this dialog: pcskeleton --outlier-isolation, "
+                             "or the Python module)"))
+        << log.toStdString();
+    EXPECT_TRUE(log.contains("or turn off 'Detect outliers'")) << log.toStdString();
 }
 
 TEST_F(SkeletonFilterTest, OutliersGetNoNodeUnlessThePapersPipelineIsAsked) {

@@ -17,7 +17,7 @@ struct OutlierParameters {
     // spacings (the median of that distance over the cloud) is isolated.
     double isolationFactor = 4.0;
     // A point whose k-th nearest neighbour is farther than this many times the same distance
-    // of its own neighbours (their median) stands off the surface they sample: this finds
+    // of its own neighbours (their upper quartile) stands off the surface they sample: this finds
     // the outliers close to the surface, which the isolation test misses, while a sparsely
     // sampled part (whose neighbours are as sparse) stays.
     double localFactor = 2.0;
