@@ -114,16 +114,16 @@ int cutContactLoops(SkeletonGraph& skeleton, const PointList& points, const Narr
 // One at a time: a cut may leave the next bridge the only way between its parts.
 std::vector<NodeGroup> strayBridgeGroups(SkeletonGraph& skeleton) {
     normalizeEdges(skeleton.edges);  // sorted, for the search below
-    for (std::vector<int>& bridge : strayBridges(skeleton, pointsOfNodes(skeleton))) {
-        const Edge farEnd{std::min(bridge[bridge.size() - 2], bridge.back()), std::max(bridge[bridge.size() - 2], bridge.back())};
-        const auto bone = std::lower_bound(skeleton.edges.begin(), skeleton.edges.end(), farEnd);
-        if (bone == skeleton.edges.end() || *bone != farEnd) continue;
-        skeleton.edges.erase(bone);
-        bridge.pop_back();
-        const int junction = bridge.front();
-        return {{std::move(bridge), junction}};
-    }
-    return {};
+    std::vector<std::vector<int>> bridges = strayBridges(skeleton, pointsOfNodes(skeleton));
+    if (bridges.empty()) return {};
+    std::vector<int>& bridge = bridges.front();
+    const int beforeEnd = bridge[bridge.size() - 2], end = bridge.back();
+    // The path's bones are the graph's: this one is there.
+    skeleton.edges.erase(std::lower_bound(skeleton.edges.begin(), skeleton.edges.end(),
+                                          Edge{std::min(beforeEnd, end), std::max(beforeEnd, end)}));
+    bridge.pop_back();
+    const int junction = bridge.front();
+    return {{std::move(bridge), junction}};
 }
 
 std::vector<NodeGroup> closeJunctionGroups(const SkeletonGraph& skeleton, double nodeSpacing) {

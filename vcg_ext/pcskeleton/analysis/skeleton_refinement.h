@@ -11,7 +11,8 @@
 //    nodes' balls do not meet) passes through the surface, is two parts that touch or
 //    that noise joined: it is opened at that bone (skeleton_structure.h, contactLoops).
 //    A stray bridge (a path between junctions, on a loop, whose nodes own a handful of
-//    points) is cut, and its nodes are absorbed as a straggling end.
+//    points) is cut at its far end, and its nodes are absorbed into the junction it then
+//    hangs from (which keeps its place).
 // 3. Junctions joined by a path shorter than the node spacing merge into one node at the
 //    path's centre.
 // Repeated until nothing changes, since each step can expose more. Merged nodes keep all
