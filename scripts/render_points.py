@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 """Renders point clouds and skeletons (ASCII PLY, OFF or XYZ) side by side into a PNG.
 
-usage: render_points.py OUT.png TITLE FILE[:LABEL] [FILE[:LABEL] ...]
-Each file gets its own panel, all seen from the same viewpoint and scale; the first
+usage: render_points.py [--view ELEVATION,AZIMUTH] OUT.png TITLE FILE[:LABEL] [FILE[:LABEL] ...]
+Each file gets its own panel, all seen from the same viewpoint (degrees; 20,-60 unless
+given) and scale; the first
 file is drawn faintly behind the others so that they can be compared with it. A PLY
 file with an edge element is drawn as a skeleton: its edges as lines, nodes as dots.
 """
@@ -54,7 +55,12 @@ def read_points(path):
 
 
 def main():
-    out, title, inputs = sys.argv[1], sys.argv[2], sys.argv[3:]
+    arguments = sys.argv[1:]
+    elevation, azimuth = 20.0, -60.0
+    if arguments and arguments[0] == "--view":
+        elevation, azimuth = (float(v) for v in arguments[1].split(","))
+        arguments = arguments[2:]
+    out, title, inputs = arguments[0], arguments[1], arguments[2:]
     clouds = []
     for item in inputs:
         path, _, label = item.partition(":")
@@ -80,7 +86,7 @@ def main():
         for axis, c in zip("xyz", centre):
             getattr(ax, f"set_{axis}lim")(c - half, c + half)
         ax.set_box_aspect((1, 1, 1))
-        ax.view_init(elev=20, azim=-60)
+        ax.view_init(elev=elevation, azim=azimuth)
         ax.set_axis_off()
         count = f"{len(points)} nodes, {len(edges)} edges" if edges else f"{len(points)} points"
         ax.set_title(f"{label}\n{count}")

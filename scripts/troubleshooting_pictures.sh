@@ -14,6 +14,7 @@ mkdir -p "$PICTURES"
 cd "$WORK"
 
 # picture NAME TITLE SHAPE CONDITION "LABEL|OPTIONS" "LABEL|OPTIONS"
+# (VIEW=ELEVATION,AZIMUTH before it: another viewpoint than render_points.py's)
 picture() {
   local name="$1" title="$2" shape="$3" condition="$4"
   shift 4
@@ -27,7 +28,7 @@ picture() {
     panels+=("$name-$i.ply:$label")
     i=$((i + 1))
   done
-  $RENDER "$PICTURES/$name.png" "$title" "${panels[@]}"
+  $RENDER ${VIEW:+--view "$VIEW"} "$PICTURES/$name.png" "$title" "${panels[@]}"
   echo "wrote $PICTURES/$name.png"
 }
 
@@ -39,3 +40,7 @@ picture spacing-too-large "Node spacing too large merges loops: lower --radius" 
   "genus 2 (figure eight)" "clean" "--radius 0.3|--radius 0.3" "default (0.02)|"
 picture outliers "Outliers make false loops; outlier detection (on by default) sets them aside" \
   "Y branch" "outliers 1%" "--paper|--paper" "default|"
+VIEW=90,-90 picture one-view-recentring "One-view scan: the paper's nodes hug the visible wall; re-centring (on by default) moves them to the axis" \
+  "ring" "scan 1 view" "--paper|--paper" "--no-recentre|--no-recentre" "default|"
+picture one-view-gaps "One-view scan: hidden stretches leave the skeleton in pieces; gap bridging (on by default) joins them" \
+  "elephant (libcgal-demo)" "scan 1 view" "--gap-limit 0|--gap-limit 0" "default|"
