@@ -25,7 +25,10 @@
 //                                       the default pipeline without the stretched-link limit
 //        bench_robustness [POINTS] --gap-limit X
 //                                       gaps in the data bridged up to X node spacings (0: none)
-//        bench_robustness [POINTS] --loop-opening X | --loop-clearance F
+//        bench_robustness [POINTS] --k N | --denoise N
+//                                       contraction's neighbour count, denoising passes
+//                                       (0 = the defaults' rules, -1 = automatic denoising)
+//        bench_robustness [POINTS] --loop-opening X | --loop-clearance F | --gap-stretch X
 //                                       refinement's narrow-loop limits (opening 0: no cut)
 //        bench_robustness [POINTS] --full-resolution | --contracted-points N
 //                                       every point contracted, or at most N (the
@@ -219,6 +222,7 @@ int outlierDetection(const std::vector<Subject>& subjects, std::size_t n, const 
 const char* const kUsage =
     "usage: bench_robustness [POINTS] [--paper] [--no-refine] [--no-recentre] [--extend-tips] [--no-link-limit]\n"
     "                        [--gap-limit X] [--loop-opening X] [--loop-clearance F] [--full-resolution]\n"
+    "                        [--gap-stretch X] [--k N] [--denoise N]\n"
     "                        [--contracted-points N] [--shape TEXT]\n"
     "       bench_robustness --outliers [POINTS [ISOLATION [CLUSTER [LOCAL]]]]\n"
     "       bench_robustness --write SHAPE CONDITION FILE [POINTS]\n"
@@ -232,7 +236,8 @@ int main(int argc, char** argv) {
                                       "--extend-tips",   "--no-link-limit",     "--full-resolution",
                                       "--outliers",      "--write",             "--contracted-points",
                                       "--shape",         "--gap-limit",         "--loop-opening",
-                                      "--loop-clearance"};
+                                      "--loop-clearance", "--k",                 "--denoise",
+                                      "--gap-stretch"};
     for (const std::string& arg : args) {
         if (arg == "--help" || arg == "-h") {
             std::printf("%s", kUsage);
@@ -247,7 +252,8 @@ int main(int argc, char** argv) {
     const bool outliers = std::find(args.begin(), args.end(), "--outliers") != args.end();
     const bool paper = std::find(args.begin(), args.end(), "--paper") != args.end();
     const std::set<std::string> optionsWithValue{"--contracted-points", "--shape", "--gap-limit", "--loop-opening",
-                                                 "--loop-clearance"};
+                                                 "--loop-clearance", "--k",                 "--denoise",
+                                                 "--gap-stretch"};
     std::size_t n = 6000;
     std::vector<double> numbers;
     for (std::size_t a = write ? 4 : 0; a < args.size(); ++a) {
@@ -267,6 +273,12 @@ int main(int argc, char** argv) {
     numberAfter("--gap-limit", pipeline.thinning.gapLimit);
     numberAfter("--loop-opening", pipeline.thinning.narrowLoops.minOpening);
     numberAfter("--loop-clearance", pipeline.thinning.narrowLoops.minClearance);
+    numberAfter("--gap-stretch", pipeline.thinning.narrowLoops.gapStretch);
+    double neighbours = pipeline.contraction.neighbourCount, denoising = pipeline.contraction.denoisingPasses;
+    numberAfter("--k", neighbours);
+    numberAfter("--denoise", denoising);
+    pipeline.contraction.neighbourCount = int(neighbours);
+    pipeline.contraction.denoisingPasses = int(denoising);
     if (std::find(args.begin(), args.end(), "--full-resolution") != args.end()) pipeline.resolution.maxContractedPoints = 0;
     // --shape TEXT: only the shapes whose name contains TEXT (e.g. the slow ones at 1M points).
     const auto shapeFilter = std::find(args.begin(), args.end(), "--shape");

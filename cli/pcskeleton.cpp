@@ -64,6 +64,7 @@ std::string optionOf(Parameter parameter) {
         case Parameter::GapLimit: return "--gap-limit";
         case Parameter::LoopOpening: return "--loop-opening";
         case Parameter::LoopClearance: return "--loop-clearance";
+        case Parameter::GapStretch: return "--gap-stretch";
         case Parameter::ContractedPoints: return "--contracted-points (without --full-resolution)";
         case Parameter::Resolution: return "--resolution";
         case Parameter::SmoothWeight: return "--smooth-weight";
@@ -184,14 +185,19 @@ void printHelp() {
         "                        junctions closer than the node spacing; by default they are\n"
         "                        removed or merged, loops narrower than their tube where\n"
         "                        parts touch are opened, and bridges of a handful of points\n"
-        "                        between parts that pass close are cut (noise and\n"
-        "                        misaligned scans leave them). --refine turns it on again\n"
-        "                        after --paper.\n"
+        "                        or a single bone across a gap, between parts that pass\n"
+        "                        close, are cut (noise and misaligned scans leave them).\n"
+        "                        --refine turns it on again after --paper.\n"
         "  --loop-opening X      refinement opens a loop whose hole is narrower than X tube\n"
         "                        radii [%g] at its bone longest for its radii, if that bone\n"
         "  --loop-clearance F    passes closer than F of its radius to a point [%g]: parts\n"
         "                        that touch or that noise joined. Lower either if a real\n"
         "                        narrow hole is lost; --loop-opening 0 opens none\n"
+        "  --gap-stretch X       refinement cuts a bone joining two strands that pass close\n"
+        "                        straight across the gap between them: on a loop, between\n"
+        "                        junctions the strands run through, longer than X times the\n"
+        "                        radii at its two ends together [%g] (their tubes do not\n"
+        "                        meet along it). Raise it if a real bone is cut; 0 cuts none\n"
         "  --no-recentre         leave every node at the centre of its points; by default a\n"
         "                        node whose points cover one side of its bone only (one-view\n"
         "                        scans, holes) moves to the centre of the circle through them\n"
@@ -239,7 +245,7 @@ void printHelp() {
         r.resolution, r.smoothWeight, r.surfaceWeight, r.skeletonWeight, r.outsideWeight, r.outsideRadii,
         c.neighbourCount, c.initialContractionWeight, c.initialAttractionWeight, c.contractionScale,
         c.maxContractionWeight, c.maxAttractionWeight, c.laplacianRowLimit, c.maxIterations, c.terminationThreshold,
-        t.sampleRadius, t.linkLimit, t.gapLimit, t.narrowLoops.minOpening, t.narrowLoops.minClearance, o.isolationFactor, o.localFactor, o.clusterShare, c.denoisingPasses,
+        t.sampleRadius, t.linkLimit, t.gapLimit, t.narrowLoops.minOpening, t.narrowLoops.minClearance, t.narrowLoops.gapStretch, o.isolationFactor, o.localFactor, o.clusterShare, c.denoisingPasses,
         kPassesForNoisySurface, kNoisySurface, kMaximumDenoisingPasses, m.maxContractedPoints);
 }
 
@@ -333,6 +339,7 @@ bool parseArguments(int argc, char** argv, Options& options) {
         {"--gap-limit", [&](const std::string& v) { options.parameters.thinning.gapLimit = parseNumber("--gap-limit", v); }},
         {"--loop-opening", [&](const std::string& v) { options.parameters.thinning.narrowLoops.minOpening = parseNumber("--loop-opening", v); }},
         {"--loop-clearance", [&](const std::string& v) { options.parameters.thinning.narrowLoops.minClearance = parseNumber("--loop-clearance", v); }},
+        {"--gap-stretch", [&](const std::string& v) { options.parameters.thinning.narrowLoops.gapStretch = parseNumber("--gap-stretch", v); }},
         {"--outlier-isolation", [&](const std::string& v) { c.outliers.isolationFactor = parseNumber("--outlier-isolation", v); }},
         {"--outlier-local", [&](const std::string& v) { c.outliers.localFactor = parseNumber("--outlier-local", v); }},
         {"--outlier-cluster", [&](const std::string& v) { c.outliers.clusterShare = parseNumber("--outlier-cluster", v); }},

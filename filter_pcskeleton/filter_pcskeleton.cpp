@@ -140,7 +140,8 @@ void addThinningParameters(RichParameterList& list) {
     list.addParam(RichBool("refine", d.refine, parameterLabel(Parameter::Refinement),
         "Cleans what noise leaves: limbs shorter than the body is thick where they join are absorbed into the "
         "junction, loops smaller than the tube around them collapse to a node, junctions closer than the node "
-        "spacing merge, bridges of a handful of points between parts that pass close are cut. On by default: on "
+        "spacing merge, bridges of a handful of points (or a single bone across a gap) between parts that pass "
+        "close are cut. On by default: on "
         "noisy and misaligned scans it removes spurs and false loops. Untick "
         "for the paper's skeleton."));
     list.addParam(RichFloat("loopOpening", float(d.narrowLoops.minOpening), parameterLabel(Parameter::LoopOpening),

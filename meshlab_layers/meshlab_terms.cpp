@@ -30,6 +30,7 @@ QString parameterLabel(Parameter parameter) {
         case Parameter::GapLimit: return "Gap limit (node spacings)";
         case Parameter::LoopOpening: return "Narrow-loop opening (tube radii)";
         case Parameter::LoopClearance: return "Narrow-loop clearance (fraction of radius)";
+        case Parameter::GapStretch: return "Gap stretch (end radii)";
         case Parameter::ContractedPoints: return "the number of contracted points (untick 'Full resolution')";
         case Parameter::SkeletonTopology: return "Keep the skeleton's topology";
     }
@@ -45,6 +46,7 @@ std::string outsideTheDialogs(Parameter parameter) {
         case Parameter::OutlierIsolation: return "--outlier-isolation";
         case Parameter::OutlierLocalFactor: return "--outlier-local";
         case Parameter::OutlierClusterShare: return "--outlier-cluster";
+        case Parameter::GapStretch: return "--gap-stretch";
         default: return {};
     }
 }

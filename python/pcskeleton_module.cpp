@@ -56,6 +56,7 @@ std::string keywordOf(Parameter parameter) {
         case Parameter::GapLimit: return "gap_limit";
         case Parameter::LoopOpening: return "loop_opening";
         case Parameter::LoopClearance: return "loop_clearance";
+        case Parameter::GapStretch: return "gap_stretch";
         case Parameter::ContractedPoints: return "contracted_points";
         case Parameter::Resolution: return "resolution";
         case Parameter::SmoothWeight: return "smooth_weight";
@@ -165,6 +166,7 @@ const std::map<std::string, Keyword>& skeletonKeywords() {
          field<double>([](Settings& s) -> double& { return s.skeleton.thinning.narrowLoops.minOpening; })},
         {"loop_clearance",
          field<double>([](Settings& s) -> double& { return s.skeleton.thinning.narrowLoops.minClearance; })},
+        {"gap_stretch", field<double>([](Settings& s) -> double& { return s.skeleton.thinning.narrowLoops.gapStretch; })},
         {"extend_tips", field<bool>([](Settings& s) -> bool& { return s.skeleton.thinning.extendTips; })},
         {"refine", field<bool>([](Settings& s) -> bool& { return s.skeleton.thinning.refine; })},
         {"recentre", field<bool>([](Settings& s) -> bool& { return s.skeleton.thinning.recentre; })},

@@ -70,6 +70,9 @@ _SKELETON_HELP = [
                      "its bone longest for its radii, if that bone passes closer than "
                      "loop_clearance of its radius to a point (parts that touch); 0 opens none."),
     ("loop_clearance", "see loop_opening; lower either if a real narrow hole is lost."),
+    ("gap_stretch", "refinement cuts a bone that joins two strands straight across the gap between "
+                    "them (on a loop, between junctions the strands run through) when it is longer "
+                    "than this many times the radii at its two ends together; 0 cuts none."),
     ("recentre", "move a node whose points cover one side of its bone only (one-view scans, "
                  "holes) to the centre of the circle through them."),
     ("keep_outliers", "contract every point; by default points that do not belong to the sampled "

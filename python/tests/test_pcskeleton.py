@@ -121,6 +121,7 @@ def test_multi_resolution_gives_every_point_a_node():
     (lambda: pcskeleton.skeletonize(shapes.torus(500), iterations=0), "at least 1"),
     (lambda: pcskeleton.skeletonize(np.full((20, 3), np.nan)), "finite|NaN|not a number"),
     (lambda: pcskeleton.skeletonize(shapes.torus(500), loop_opening=-1), "^loop_opening must be 0"),
+    (lambda: pcskeleton.skeletonize(shapes.torus(500), gap_stretch=0.5), "^gap_stretch must be 0"),
     (lambda: pcskeleton.read_points("/nonexistent/scan.ply"), "nonexistent"),
     (lambda: pcskeleton.read_skeleton("/nonexistent/skeleton.ply"), "nonexistent"),
 ])

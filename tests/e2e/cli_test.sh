@@ -88,8 +88,8 @@ extended=$($GRAPH show elephant.ply | sed 's/.*nodes.: \([0-9]*\).*/\1/')
 [ "$paper" -lt "$extended" ] || fail "--no-extend-tips gave $paper nodes, not fewer than the default's $extended"
 
 # Noise joins two of the three rings (bench_robustness's case): refinement opens that loop and
-# says so; without refinement the report warns of it, naming the option; --loop-opening 0
-# keeps it.
+# says so; without refinement the report warns of it, naming the option; with --loop-opening 0
+# it goes as a bone across the gap between the rings, and --gap-stretch 0 as well keeps it.
 RINGS="$HERE/../data/scans/three_rings_noise1_6000.ply"
 "$PCSKELETON" "$RINGS" -o rings.ply 2>rings.log
 $GRAPH check rings.ply --cycles 3 --components 1
@@ -98,8 +98,13 @@ grep -q "cut 1 narrow loop," rings.log || { cat rings.log; fail "the report does
 $GRAPH check rings_unrefined.ply --cycles 4
 grep -q "1 loop is narrower than the tube around them and closed by a bone that crosses the surface" rings_unrefined.log \
   && grep -q "refinement" rings_unrefined.log || { cat rings_unrefined.log; fail "no warning of the loop where rings touch"; }
-"$PCSKELETON" "$RINGS" -o rings_kept.ply --loop-opening 0 --quiet
+"$PCSKELETON" "$RINGS" -o rings_gap.ply --loop-opening 0 2>rings_gap.log
+$GRAPH check rings_gap.ply --cycles 3
+grep -q "cut 0 narrow loops, 1 stray bridge," rings_gap.log || { cat rings_gap.log; fail "the bone across the gap is not counted"; }
+"$PCSKELETON" "$RINGS" -o rings_kept.ply --loop-opening 0 --gap-stretch 0 --quiet
 $GRAPH check rings_kept.ply --cycles 4
+"$PCSKELETON" "$RINGS" -o rings_bad.ply --gap-stretch 0.5 2>rings_bad.log && fail "--gap-stretch 0.5 was accepted"
+grep -q -- "--gap-stretch" rings_bad.log || { cat rings_bad.log; fail "the refusal does not name --gap-stretch"; }
 
 # One node index per input point; the contracted points (binary PLY) read back as input.
 [ "$(wc -l <elephant.nodes)" = 2775 ] || fail "correspondence has $(wc -l <elephant.nodes) lines, expected 2775"

@@ -139,6 +139,12 @@ void checkThinningParameters(const ThinningParameters& parameters) {
         throw InvalidInput(Problem::aboutParameter(
             Parameter::LoopClearance, "must be a fraction of a bone's radius between 0 and 1."));
     }
+    const double gapStretch = parameters.narrowLoops.gapStretch;
+    if (!(gapStretch == 0.0 || (gapStretch >= 1.0 && std::isfinite(gapStretch)))) {
+        throw InvalidInput(Problem::aboutParameter(
+            Parameter::GapStretch, "must be 0 (no bone is cut) or at least 1 (a shorter bone is inside the tubes at its "
+                                   "ends)."));
+    }
     if (!(parameters.sampleRadius > 0.0 && parameters.sampleRadius < 1.0)) {
         std::ostringstream requirement;
         requirement << "must be a fraction of the bounding-box diagonal between 0 and 1 (the paper uses 0.02); got "

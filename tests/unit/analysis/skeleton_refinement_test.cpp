@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
+#include <vector>
 
 using namespace pcskeleton;
 using namespace pcskeleton::graphs;
@@ -121,6 +123,87 @@ TEST(SkeletonRefinement, CutsAStrayBridgeButNotAThinHandle) {
     const RefinementReport kept = refineSkeleton(handle, {}, kSpacing);
     EXPECT_EQ(kept.bridgesCut, 0) << describe(kept);
     EXPECT_EQ(analyseTopology(handle).cycles, 2);
+}
+
+namespace {
+
+// Two parallel chains of 11 nodes (20 points each, radius 0.2), along x at y = 0 and at
+// y = 0.5, and a node of `bridgePoints` points half way between their nodes 5.
+SkeletonGraph chainsSideBySide(int bridgePoints) {
+    SkeletonGraph g = straightChain();
+    for (int i = 0; i <= 10; ++i) {  // nodes 11..21; node 16 faces node 5
+        g.nodes.emplace_back(kSpacing * i, 0.5, 0);
+        g.radii.push_back(0.2);
+        if (i > 0) g.edges.push_back({10 + i, 11 + i});
+    }
+    for (int node = 0; node < int(g.nodeCount()); ++node) g.pointNode.insert(g.pointNode.end(), 20, node);
+    const int bridge = addNode(g, Point(0.5, 0.25, 0), 5);
+    g.edges.push_back({bridge, 16});
+    normalizeEdges(g.edges);
+    g.pointNode.insert(g.pointNode.end(), std::size_t(bridgePoints), bridge);
+    return g;
+}
+
+}  // namespace
+
+TEST(SkeletonRefinement, ParallelPartsJoinedByAStrayBridgeComeApart) {
+    // Two parts side by side (two close tubes under noise): the one-point node that joins
+    // them is cut, and the skeleton has two parts.
+    SkeletonGraph joined = chainsSideBySide(1);
+    ASSERT_EQ(invariantViolation(joined), "");
+    ASSERT_EQ(analyseTopology(joined).components, 1);
+    const RefinementReport report = refineSkeleton(joined, {}, kSpacing);
+    EXPECT_EQ(invariantViolation(joined), "");
+    EXPECT_EQ(report.bridgesCut, 1) << describe(report);
+    EXPECT_EQ(analyseTopology(joined).components, 2) << describe(analyseTopology(joined));
+    EXPECT_EQ(analyseTopology(joined).tips, 4) << describe(analyseTopology(joined));
+
+    // Kept: a connection with points of its own (a real one, however thin), and a one-point
+    // node where a limb ends at the side of the other part, not two parts running side by
+    // side (the upper chain's nodes 6-10 turn away, 90 degrees).
+    SkeletonGraph elbow = chainsSideBySide(1);
+    for (int i = 17; i <= 21; ++i) elbow.nodes[i] = Point(0.5, 0.5 + kSpacing * (i - 16), 0);
+    for (SkeletonGraph kept : {chainsSideBySide(5), elbow}) {
+        EXPECT_EQ(refineSkeleton(kept, {}, kSpacing).bridgesCut, 0);
+        EXPECT_EQ(analyseTopology(kept).components, 1);
+    }
+}
+
+namespace {
+
+// A ring of 24 nodes of radius 0.05 and radius 1, and one bone straight from node 0 to
+// node 8 (1.73 long), whose two ends have radius `endRadius`.
+SkeletonGraph ringWithBoneAcross(double endRadius) {
+    SkeletonGraph g = shapes::curveSkeleton(shapes::circle(Point::Zero(), 1.0, 24), 0.05);
+    g.radii[0] = g.radii[8] = endRadius;
+    g.edges.push_back({0, 8});
+    normalizeEdges(g.edges);
+    return g;
+}
+
+}  // namespace
+
+TEST(SkeletonRefinement, CutsABoneAcrossAGapButNotARealBar) {
+    // The strands' tubes (radius 0.6) do not meet along the bone: 1.73 > 1.15 x 1.2 (its
+    // stretch is 1.73 / 1.2 = 1.44).
+    SkeletonGraph gap = ringWithBoneAcross(0.6);
+    ASSERT_EQ(analyseTopology(gap).cycles, 2);
+    const RefinementReport report = refineSkeleton(gap, {}, kSpacing);
+    EXPECT_EQ(report.bridgesCut, 1) << describe(report);
+    EXPECT_EQ(analyseTopology(gap).cycles, 1) << describe(analyseTopology(gap));
+    EXPECT_EQ(analyseTopology(gap).tips, 0) << describe(analyseTopology(gap));
+
+    // Kept: tubes of radius 0.8 meet along it (1.73 < 1.15 x 1.6), a bar; tubes of radius
+    // 0.04, thinner than the node spacing, are not judged (every bone is longer than them);
+    // a gap stretch of 0 cuts none, and one of 1.5, above the bone's, neither.
+    const std::vector<std::pair<double, double>> kept{{0.8, 1.15}, {0.04, 1.15}, {0.6, 0.0}, {0.6, 1.5}};
+    for (const auto& [endRadius, stretch] : kept) {
+        SkeletonGraph g = ringWithBoneAcross(endRadius);
+        NarrowLoopLimits limits;
+        limits.gapStretch = stretch;
+        EXPECT_EQ(refineSkeleton(g, {}, kSpacing, limits).bridgesCut, 0) << endRadius << ", " << stretch;
+        EXPECT_EQ(analyseTopology(g).cycles, 2) << endRadius << ", " << stretch;
+    }
 }
 
 TEST(SkeletonRefinement, LeavesACleanSkeletonAlone) {

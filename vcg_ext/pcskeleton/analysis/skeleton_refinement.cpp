@@ -87,6 +87,12 @@ std::vector<NodeGroup> spuriousCycleGroups(const SkeletonGraph& skeleton, double
     return groups;
 }
 
+// Removes a bone of the graph; its edges must be sorted (normalizeEdges).
+void eraseBone(SkeletonGraph& skeleton, Edge bone) {
+    if (bone[0] > bone[1]) std::swap(bone[0], bone[1]);
+    skeleton.edges.erase(std::lower_bound(skeleton.edges.begin(), skeleton.edges.end(), bone));
+}
+
 // Each contact loop (skeleton_structure.h) is opened at its bone. Measured once, on the
 // loops thinning gave: after a cut the basis may pair what is left of a loop with a
 // neighbouring one and measure the two as one narrow loop (the paper's
@@ -103,7 +109,20 @@ int cutContactLoops(SkeletonGraph& skeleton, const PointList& points, const Narr
             whole = std::binary_search(skeleton.edges.begin(), skeleton.edges.end(), e);
         }
         if (!whole) continue;
-        skeleton.edges.erase(std::lower_bound(skeleton.edges.begin(), skeleton.edges.end(), loop.bone));
+        eraseBone(skeleton, loop.bone);
+        ++cuts;
+    }
+    return cuts;
+}
+
+// Bones across gaps (skeleton_structure.h) are cut one at a time, most stretched first: a
+// cut may leave the next one the only way between its parts.
+int cutBonesAcrossGaps(SkeletonGraph& skeleton, double nodeSpacing, double minStretch) {
+    int cuts = 0;
+    for (std::vector<Edge> bones = bonesAcrossGaps(skeleton, nodeSpacing, minStretch); !bones.empty();
+         bones = bonesAcrossGaps(skeleton, nodeSpacing, minStretch)) {
+        normalizeEdges(skeleton.edges);
+        eraseBone(skeleton, bones.front());
         ++cuts;
     }
     return cuts;
@@ -118,9 +137,7 @@ std::vector<NodeGroup> strayBridgeGroups(SkeletonGraph& skeleton) {
     if (bridges.empty()) return {};
     std::vector<int>& bridge = bridges.front();
     const int beforeEnd = bridge[bridge.size() - 2], end = bridge.back();
-    // The path's bones are the graph's: this one is there.
-    skeleton.edges.erase(std::lower_bound(skeleton.edges.begin(), skeleton.edges.end(),
-                                          Edge{std::min(beforeEnd, end), std::max(beforeEnd, end)}));
+    eraseBone(skeleton, Edge{beforeEnd, end});
     bridge.pop_back();
     const int junction = bridge.front();
     return {{std::move(bridge), junction}};
@@ -158,7 +175,8 @@ RefinementReport refineSkeleton(SkeletonGraph& skeleton, const PointList& points
         const int ends = merge(stragglingEndGroups(skeleton, nodeSpacing));
         const int cycles = merge(spuriousCycleGroups(skeleton, nodeSpacing));
         const int cuts = pass == 0 ? cutContactLoops(skeleton, points, narrowLoops) : 0;
-        const int bridges = merge(strayBridgeGroups(skeleton));
+        const int bridges =
+            cutBonesAcrossGaps(skeleton, nodeSpacing, narrowLoops.gapStretch) + merge(strayBridgeGroups(skeleton));
         const int junctions = merge(closeJunctionGroups(skeleton, nodeSpacing));
         report.spursRemoved += spurs;
         report.endsTrimmed += ends;

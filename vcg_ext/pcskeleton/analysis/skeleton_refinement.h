@@ -10,9 +10,11 @@
 //    A loop whose opening is narrower than its tube, and whose most stretched bone (its
 //    nodes' balls do not meet) passes through the surface, is two parts that touch or
 //    that noise joined: it is opened at that bone (skeleton_structure.h, contactLoops).
-//    A stray bridge (a path between junctions, on a loop, whose nodes own a handful of
-//    points) is cut at its far end, and its nodes are absorbed into the junction it then
-//    hangs from (which keeps its place).
+//    A stray bridge (a path between junctions, on a loop or between parts side by side,
+//    whose nodes own a handful of points) is cut at its far end, and its nodes are
+//    absorbed into the junction it then hangs from (which keeps its place). A bone across
+//    a gap (straight between two strands whose tubes do not meet along it) is cut; the
+//    report counts it as a stray bridge.
 // 3. Junctions joined by a path shorter than the node spacing merge into one node at the
 //    path's centre.
 // Repeated until nothing changes, since each step can expose more. Merged nodes keep all

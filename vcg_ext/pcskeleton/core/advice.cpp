@@ -39,6 +39,7 @@ std::string libraryParameterName(Parameter p) {
         case Parameter::GapLimit: return "the gap limit";
         case Parameter::LoopOpening: return "the narrow-loop opening";
         case Parameter::LoopClearance: return "the narrow-loop clearance";
+        case Parameter::GapStretch: return "the gap stretch";
         case Parameter::ContractedPoints: return "the number of contracted points";
         case Parameter::SkeletonTopology: return "the skeleton's topology guarantee";
     }

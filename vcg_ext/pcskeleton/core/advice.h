@@ -40,6 +40,7 @@ enum class Parameter {
     GapLimit,
     LoopOpening,
     LoopClearance,
+    GapStretch,
     ContractedPoints,
     SkeletonTopology,  // the reconstruction keeps the skeleton's topology
 };
