@@ -128,17 +128,17 @@ TEST(SkeletonRefinement, CutsAStrayBridgeButNotAThinHandle) {
 namespace {
 
 // Two parallel chains of 11 nodes (20 points each, radius 0.2), along x at y = 0 and at
-// y = 0.5, and a node of `bridgePoints` points half way between their nodes 5.
-SkeletonGraph chainsSideBySide(int bridgePoints) {
+// y = 0.5, and a node of `bridgePoints` points half way between their nodes `at`.
+SkeletonGraph chainsSideBySide(int bridgePoints, int at = 5) {
     SkeletonGraph g = straightChain();
-    for (int i = 0; i <= 10; ++i) {  // nodes 11..21; node 16 faces node 5
+    for (int i = 0; i <= 10; ++i) {  // nodes 11..21; node 11 + i faces node i
         g.nodes.emplace_back(kSpacing * i, 0.5, 0);
         g.radii.push_back(0.2);
         if (i > 0) g.edges.push_back({10 + i, 11 + i});
     }
     for (int node = 0; node < int(g.nodeCount()); ++node) g.pointNode.insert(g.pointNode.end(), 20, node);
-    const int bridge = addNode(g, Point(0.5, 0.25, 0), 5);
-    g.edges.push_back({bridge, 16});
+    const int bridge = addNode(g, Point(kSpacing * at, 0.25, 0), at);
+    g.edges.push_back({bridge, 11 + at});
     normalizeEdges(g.edges);
     g.pointNode.insert(g.pointNode.end(), std::size_t(bridgePoints), bridge);
     return g;
@@ -146,24 +146,32 @@ SkeletonGraph chainsSideBySide(int bridgePoints) {
 
 }  // namespace
 
-TEST(SkeletonRefinement, ParallelPartsJoinedByAStrayBridgeComeApart) {
-    // Two parts side by side (two close tubes under noise): the one-point node that joins
-    // them is cut, and the skeleton has two parts.
-    SkeletonGraph joined = chainsSideBySide(1);
-    ASSERT_EQ(invariantViolation(joined), "");
-    ASSERT_EQ(analyseTopology(joined).components, 1);
-    const RefinementReport report = refineSkeleton(joined, {}, kSpacing);
-    EXPECT_EQ(invariantViolation(joined), "");
-    EXPECT_EQ(report.bridgesCut, 1) << describe(report);
-    EXPECT_EQ(analyseTopology(joined).components, 2) << describe(analyseTopology(joined));
-    EXPECT_EQ(analyseTopology(joined).tips, 4) << describe(analyseTopology(joined));
+TEST(SkeletonRefinement, PartsSideBySideJoinedByAStrayBridgeComeApart) {
+    // Two parts side by side (two close tubes under noise) joined by a one-point node,
+    // between their middles or between their ends (a U): the node is cut away, and the
+    // skeleton has two parts.
+    for (const int at : {5, 0}) {
+        SkeletonGraph joined = chainsSideBySide(1, at);
+        ASSERT_EQ(invariantViolation(joined), "");
+        ASSERT_EQ(analyseTopology(joined).components, 1);
+        const RefinementReport report = refineSkeleton(joined, {}, kSpacing);
+        EXPECT_EQ(invariantViolation(joined), "") << at;
+        EXPECT_EQ(report.bridgesCut, 1) << at << ": " << describe(report);
+        EXPECT_EQ(analyseTopology(joined).components, 2) << at << ": " << describe(analyseTopology(joined));
+        EXPECT_EQ(analyseTopology(joined).tips, 4) << at << ": " << describe(analyseTopology(joined));
+    }
 
-    // Kept: a connection with points of its own (a real one, however thin), and a one-point
-    // node where a limb ends at the side of the other part, not two parts running side by
-    // side (the upper chain's nodes 6-10 turn away, 90 degrees).
+    // Kept: connections with points of their own (a real one, however thin; a real U); a
+    // one-point node where a limb ends at the side of the other part, not two parts running
+    // side by side (the upper chain's nodes 6-10 turn away, 90 degrees); and a node of one
+    // point on a straight chain (a thin stretch: the chain runs on both ways, not the same).
     SkeletonGraph elbow = chainsSideBySide(1);
     for (int i = 17; i <= 21; ++i) elbow.nodes[i] = Point(0.5, 0.5 + kSpacing * (i - 16), 0);
-    for (SkeletonGraph kept : {chainsSideBySide(5), elbow}) {
+    SkeletonGraph straight = straightChain();
+    for (int node = 0; node <= 10; ++node) {
+        straight.pointNode.insert(straight.pointNode.end(), node == 5 ? 1 : 20, node);
+    }
+    for (SkeletonGraph kept : {chainsSideBySide(5), chainsSideBySide(5, 0), elbow, straight}) {
         EXPECT_EQ(refineSkeleton(kept, {}, kSpacing).bridgesCut, 0);
         EXPECT_EQ(analyseTopology(kept).components, 1);
     }

@@ -25,6 +25,9 @@ constexpr double kStragglerShare = 0.1;
 // robustness suite 120 and 127 degrees measured the same, 134 kept a false loop of the
 // knot with 1% noise, whose strand bends by 133 degrees at one end of it.)
 constexpr double kThroughCosine = -0.5;
+// The chain runs on from both ends of a U-turn bridge within 60 degrees of the same
+// direction (cosine above this): the parts it joins lie side by side.
+constexpr double kSameWayCosine = 0.5;
 
 double boneLength(const SkeletonGraph& graph, int a, int b) { return (graph.nodes[a] - graph.nodes[b]).norm(); }
 
@@ -107,6 +110,52 @@ bool isThroughJunction(const SkeletonGraph& graph, const std::vector<std::vector
     return ways[0].dot(ways[1]) < kThroughCosine;
 }
 
+// U-turn bridges (strayBridges): each run of consecutive nodes of degree 2 that together own
+// fewer than `fewest` points, between two nodes of degree 2 from which the chain runs on
+// the same way; given with those two nodes at its ends. A run that closes on itself is
+// not one.
+std::vector<std::vector<int>> uTurnBridges(const SkeletonGraph& graph, const std::vector<std::vector<int>>& neighbours,
+                                           const std::vector<std::vector<int>>& nodePoints, double fewest) {
+    const auto few = [&](int n) { return neighbours[n].size() == 2 && double(nodePoints[n].size()) < fewest; };
+    // From `end`, away from `from`: the way the chain runs on (zero past a junction or tip).
+    const auto onward = [&](int end, int from) -> Point {
+        if (neighbours[end].size() != 2) return Point::Zero();
+        const int next = neighbours[end][0] == from ? neighbours[end][1] : neighbours[end][0];
+        return (graph.nodes[next] - graph.nodes[end]).normalized();
+    };
+    std::vector<std::vector<int>> bridges;
+    std::vector<bool> seen(graph.nodeCount(), false);
+    for (std::size_t first = 0; first < graph.nodeCount(); ++first) {
+        if (seen[first] || !few(int(first))) continue;
+        // Grow the run both ways; ends[side] is the first node past it on that side.
+        std::vector<int> run{int(first)};
+        seen[first] = true;
+        int ends[2] = {-1, -1};
+        bool closed = false;
+        for (int side = 0; side < 2 && !closed; ++side) {
+            int previous = int(first), current = neighbours[first][side];
+            while (few(current) && !closed) {
+                closed = seen[current];
+                seen[current] = true;
+                run.insert(side == 0 ? run.begin() : run.end(), current);
+                const int ahead = neighbours[current][0] == previous ? neighbours[current][1] : neighbours[current][0];
+                previous = current, current = ahead;
+            }
+            ends[side] = current;
+        }
+        if (closed || ends[0] == ends[1]) continue;
+        double runPoints = 0.0;
+        for (int n : run) runPoints += double(nodePoints[n].size());
+        if (runPoints >= fewest) continue;
+        if (onward(ends[0], run.front()).dot(onward(ends[1], run.back())) > kSameWayCosine) {
+            run.insert(run.begin(), ends[0]);
+            run.push_back(ends[1]);
+            bridges.push_back(std::move(run));
+        }
+    }
+    return bridges;
+}
+
 }  // namespace
 
 double pathLength(const SkeletonGraph& graph, const std::vector<int>& path) {
@@ -175,6 +224,9 @@ std::vector<std::vector<int>> strayBridges(const SkeletonGraph& graph, const std
         const bool sideBySide = isThroughJunction(graph, neighbours, path.front(), path[1]) &&
                                 isThroughJunction(graph, neighbours, path.back(), path[path.size() - 2]);
         if (onLoop || sideBySide) bridges.push_back(std::move(path));
+    }
+    for (std::vector<int>& path : uTurnBridges(graph, neighbours, nodePoints, fewest)) {
+        bridges.push_back(std::move(path));
     }
     return bridges;
 }

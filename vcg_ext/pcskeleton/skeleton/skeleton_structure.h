@@ -50,13 +50,16 @@ std::vector<std::vector<int>> stragglingEnds(const SkeletonGraph& graph,
 // tenth of the points of the skeleton's median node (the share stragglingEnds uses), and
 // that lie on a loop or join two parts side by side (at both ends the path leaves a
 // junction of three bones from the side, the other two meeting at more than 120 degrees,
-// straighter than a symmetric Y).
+// straighter than a symmetric Y); and U-turns: runs of nodes in a chain, owning as few
+// points in all, from whose two ends the chain runs on the same way (within 60 degrees),
+// two parts side by side joined at their ends.
 // Where two parts pass close by (the strands of a knot at a crossing, two parallel tubes
 // under noise, scans misaligned across a gap), contraction pulls the few points of their
 // facing walls into the gap, and thinning strings them into a node or two that joins the
 // parts: a false loop, or one part where there are two. A real handle or connection,
-// however thin, has more points than that. Each path is given from junction to junction;
-// a path without inner nodes is not judged (see bonesAcrossGaps).
+// however thin, has more points than that. Each path is given from end to end (junction
+// to junction, or the two nodes beside a U-turn); a path without inner nodes is not judged
+// (see bonesAcrossGaps).
 std::vector<std::vector<int>> strayBridges(const SkeletonGraph& graph, const std::vector<std::vector<int>>& nodePoints);
 
 // Bones across gaps: a bone joining two junctions directly, each a junction of three bones
