@@ -180,12 +180,16 @@ TEST(SkeletonRefinement, PartsSideBySideJoinedByAStrayBridgeComeApart) {
 namespace {
 
 // A ring of 24 nodes of radius 0.05 and radius 1, and one bone straight from node 0 to
-// node 8 (1.73 long), whose two ends have radius `endRadius`.
-SkeletonGraph ringWithBoneAcross(double endRadius) {
+// node 8 (1.73 long), whose two ends have radius `endRadius`; with `limbAtNode0`, a limb
+// of 5 nodes runs out from node 0, a junction of four bones.
+SkeletonGraph ringWithBoneAcross(double endRadius, bool limbAtNode0 = false) {
     SkeletonGraph g = shapes::curveSkeleton(shapes::circle(Point::Zero(), 1.0, 24), 0.05);
     g.radii[0] = g.radii[8] = endRadius;
     g.edges.push_back({0, 8});
     normalizeEdges(g.edges);
+    for (int step = 1, previous = 0; limbAtNode0 && step <= 5; ++step) {
+        previous = addNode(g, Point(1.0 + 0.2 * step, 0, 0), previous);
+    }
     return g;
 }
 
@@ -193,13 +197,15 @@ SkeletonGraph ringWithBoneAcross(double endRadius) {
 
 TEST(SkeletonRefinement, CutsABoneAcrossAGapButNotARealBar) {
     // The strands' tubes (radius 0.6) do not meet along the bone: 1.73 > 1.15 x 1.2 (its
-    // stretch is 1.73 / 1.2 = 1.44).
-    SkeletonGraph gap = ringWithBoneAcross(0.6);
-    ASSERT_EQ(analyseTopology(gap).cycles, 2);
-    const RefinementReport report = refineSkeleton(gap, {}, kSpacing);
-    EXPECT_EQ(report.bridgesCut, 1) << describe(report);
-    EXPECT_EQ(analyseTopology(gap).cycles, 1) << describe(analyseTopology(gap));
-    EXPECT_EQ(analyseTopology(gap).tips, 0) << describe(analyseTopology(gap));
+    // stretch is 1.73 / 1.2 = 1.44). Also where a limb leaves one of its ends.
+    for (const bool limb : {false, true}) {
+        SkeletonGraph gap = ringWithBoneAcross(0.6, limb);
+        ASSERT_EQ(analyseTopology(gap).cycles, 2);
+        const RefinementReport report = refineSkeleton(gap, {}, kSpacing);
+        EXPECT_EQ(report.bridgesCut, 1) << limb << ": " << describe(report);
+        EXPECT_EQ(analyseTopology(gap).cycles, 1) << limb << ": " << describe(analyseTopology(gap));
+        EXPECT_EQ(analyseTopology(gap).tips, limb ? 1 : 0) << limb << ": " << describe(analyseTopology(gap));
+    }
 
     // Kept: tubes of radius 0.8 meet along it (1.73 < 1.15 x 1.6), a bar; tubes of radius
     // 0.04, thinner than the node spacing, are not judged (every bone is longer than them);

@@ -49,8 +49,8 @@ std::vector<std::vector<int>> stragglingEnds(const SkeletonGraph& graph,
 // Stray bridges: paths between two junctions whose inner nodes together own fewer than a
 // tenth of the points of the skeleton's median node (the share stragglingEnds uses), and
 // that lie on a loop or join two parts side by side (at both ends the path leaves a
-// junction of three bones from the side, the other two meeting at more than 120 degrees,
-// straighter than a symmetric Y); and U-turns: runs of nodes in a chain, owning as few
+// junction of three or four bones from the side, two of the others meeting at more than
+// 120 degrees, straighter than a symmetric Y); and U-turns: runs of nodes in a chain, owning as few
 // points in all, from whose two ends the chain runs on the same way (within 60 degrees),
 // two parts side by side joined at their ends.
 // Where two parts pass close by (the strands of a knot at a crossing, two parallel tubes
@@ -62,8 +62,8 @@ std::vector<std::vector<int>> stragglingEnds(const SkeletonGraph& graph,
 // (see bonesAcrossGaps).
 std::vector<std::vector<int>> strayBridges(const SkeletonGraph& graph, const std::vector<std::vector<int>>& nodePoints);
 
-// Bones across gaps: a bone joining two junctions directly, each a junction of three bones
-// whose other two meet at more than 120 degrees, on a loop, and longer than `minStretch`
+// Bones across gaps: a bone joining two junctions directly, each a junction of three or four
+// bones two of whose others meet at more than 120 degrees, on a loop, and longer than `minStretch`
 // (NarrowLoopLimits::gapStretch; 0 = none) times the two radii at its ends together, so
 // that the tubes of the strands it joins do not meet along it. Where two strands pass
 // close, thinning can join them by one such bone across the gap between them: a false
@@ -109,7 +109,7 @@ bool boneGrazesSurface(const SkeletonGraph& graph, const Edge& bone, const Point
 // --gap-stretch X: a bone across a gap (bonesAcrossGaps) is longer than X times the radii at
 // its two ends together; 0 = none is cut. On the suite real bones between through
 // junctions reach 1.08 (the bars of the three rings), the bones across the knot's
-// crossings 1.19-1.85; 1.15 turns 3 cases of the knot right and none wrong.
+// crossings 1.19-1.85; 1.15 turns 4 cases of the knot right and none wrong.
 struct NarrowLoopLimits {
     double minOpening = 1.0;     // in tube radii; 0 = no loop is a contact
     double minClearance = 0.35;  // fraction of the bone's radius
