@@ -118,10 +118,10 @@ int cutContactLoops(SkeletonGraph& skeleton, const PointList& points, const Narr
 // Bones across gaps (skeleton_structure.h) are cut one at a time, most stretched first: a
 // cut may leave the next one the only way between its parts.
 int cutBonesAcrossGaps(SkeletonGraph& skeleton, double nodeSpacing, double minStretch) {
+    normalizeEdges(skeleton.edges);  // sorted, for eraseBone; erasing keeps them so
     int cuts = 0;
     for (std::vector<Edge> bones = bonesAcrossGaps(skeleton, nodeSpacing, minStretch); !bones.empty();
          bones = bonesAcrossGaps(skeleton, nodeSpacing, minStretch)) {
-        normalizeEdges(skeleton.edges);
         eraseBone(skeleton, bones.front());
         ++cuts;
     }
@@ -175,8 +175,9 @@ RefinementReport refineSkeleton(SkeletonGraph& skeleton, const PointList& points
         const int ends = merge(stragglingEndGroups(skeleton, nodeSpacing));
         const int cycles = merge(spuriousCycleGroups(skeleton, nodeSpacing));
         const int cuts = pass == 0 ? cutContactLoops(skeleton, points, narrowLoops) : 0;
-        const int bridges =
-            cutBonesAcrossGaps(skeleton, nodeSpacing, narrowLoops.gapStretch) + merge(strayBridgeGroups(skeleton));
+        // Two statements: the bones go first, and the operands of + have no set order.
+        const int gapBones = cutBonesAcrossGaps(skeleton, nodeSpacing, narrowLoops.gapStretch);
+        const int bridges = gapBones + merge(strayBridgeGroups(skeleton));
         const int junctions = merge(closeJunctionGroups(skeleton, nodeSpacing));
         report.spursRemoved += spurs;
         report.endsTrimmed += ends;
