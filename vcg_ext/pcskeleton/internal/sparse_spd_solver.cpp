@@ -15,8 +15,9 @@ namespace {
 // CHOLMOD's supernodal factorisation calls BLAS, and OpenBLAS divides that work by its
 // thread count with a different rounding for each: 1 and 2 threads gave different
 // skeleton files. One BLAS thread during our factorisations keeps results byte-identical
-// on every machine (the contraction's 10K-100K-point systems have small supernodes, where
-// BLAS threads gain little). OpenBLAS is reached through the loaded BLAS library (it may
+// from run to run on one machine (the contraction's 10K-100K-point systems have small
+// supernodes, where BLAS threads gain little); across CPUs OpenBLAS's kernels differ
+// (sparse_spd_solver.h). OpenBLAS is reached through the loaded BLAS library (it may
 // be local to a plugin); any other BLAS is left alone.
 class OneBlasThread {
 public:
@@ -73,6 +74,9 @@ SparseSpdSolver::~SparseSpdSolver() = default;
 bool SparseSpdSolver::factorize(const Matrix& m) {
     const bool analyse = !impl_->samePattern(m);
     if (analyse) impl_->rememberPattern(m);
+    if (impl_->kind == LinearSolver::Automatic) {
+        impl_->kind = m.rows() <= kLargestPortableSystem ? LinearSolver::EigenSimplicial : LinearSolver::Cholmod;
+    }
     if (impl_->kind == LinearSolver::Cholmod) {
         const OneBlasThread deterministic;
         if (analyse) {

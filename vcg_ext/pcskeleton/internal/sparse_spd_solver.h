@@ -10,9 +10,23 @@
 namespace pcskeleton {
 
 enum class LinearSolver {
-    Cholmod,          // SuiteSparse CHOLMOD supernodal Cholesky (the default: fastest measured)
-    EigenSimplicial,  // Eigen's SimplicialLDLT (no SuiteSparse needed; kept for comparison)
+    // The default: EigenSimplicial up to kLargestPortableSystem unknowns, Cholmod above.
+    Automatic,
+    // SuiteSparse CHOLMOD supernodal Cholesky: the fastest on large systems (2x Eigen's at
+    // 50K unknowns, bench_contraction). Its dense blocks go to the machine's BLAS, and
+    // OpenBLAS picks its kernels by CPU: the same cloud gave different skeletons with
+    // OPENBLAS_CORETYPE=Haswell and =Sandybridge (libcgal-demo's hand from one view: a
+    // false loop or none).
+    Cholmod,
+    // Eigen's SimplicialLDLT: our own compiled code only, so the same result on every
+    // machine that runs the same build. As fast as CHOLMOD at 6000 unknowns, 16% slower at
+    // 15000 (bench_contraction).
+    EigenSimplicial,
 };
+
+// Every contraction at the default settings is at most this large (15000 contracted
+// points), so its result does not depend on the machine.
+inline constexpr long kLargestPortableSystem = 20000;
 
 class SparseSpdSolver {
 public:
