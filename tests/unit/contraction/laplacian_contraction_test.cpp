@@ -163,7 +163,8 @@ TEST(Contraction, EigenSolverMatchesCholmod) {
     ContractionParameters p;
     p.solver = LinearSolver::EigenSimplicial;
     const ContractionResult eigen = LaplacianContraction::run(cloud, p);
-    const ContractionResult cholmod = LaplacianContraction::run(cloud);
+    p.solver = LinearSolver::Cholmod;
+    const ContractionResult cholmod = LaplacianContraction::run(cloud, p);
     ASSERT_EQ(eigen.iterations.size(), cholmod.iterations.size());
     for (std::size_t i = 0; i < cloud.size(); ++i) EXPECT_LT((eigen.contracted[i] - cholmod.contracted[i]).norm(), 1e-6);
 }
