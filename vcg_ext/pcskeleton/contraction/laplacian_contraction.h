@@ -44,7 +44,7 @@ struct ContractionParameters {
     OutlierParameters outliers;             // points set aside before the 1-rings (not the paper's)
     int denoisingPasses = -1;               // contract a denoised copy (point_denoising.h): -1 = only
                                             // noisy clouds, 0 = never (the paper's), 1..10 passes
-    LinearSolver solver = LinearSolver::Automatic;  // the same result on every machine up to 20K points
+    LinearSolver solver = LinearSolver::Automatic;  // no BLAS up to 20K points: the same on every CPU
 };
 
 enum class StopReason {

@@ -18,14 +18,14 @@ enum class LinearSolver {
     // OPENBLAS_CORETYPE=Haswell and =Sandybridge (libcgal-demo's hand from one view: a
     // false loop or none).
     Cholmod,
-    // Eigen's SimplicialLDLT: our own compiled code only, so the same result on every
-    // machine that runs the same build. As fast as CHOLMOD at 6000 unknowns, 16% slower at
+    // Eigen's SimplicialLDLT: our own compiled code only, no BLAS, so the result does not
+    // depend on the CPU's BLAS kernels. As fast as CHOLMOD at 6000 unknowns, 16% slower at
     // 15000 (bench_contraction).
     EigenSimplicial,
 };
 
 // Every contraction at the default settings is at most this large (15000 contracted
-// points), so its result does not depend on the machine.
+// points), so its result does not depend on the CPU's BLAS kernels.
 inline constexpr long kLargestPortableSystem = 20000;
 
 class SparseSpdSolver {
