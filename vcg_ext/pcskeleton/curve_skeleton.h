@@ -67,6 +67,10 @@ struct ResolutionParameters {
     // 0 = 80% of the machine's physical memory.
     double memoryLimit = 0.0;
 };
+// The default subsample is solved without BLAS, so default runs give the same skeleton
+// whichever kernels OpenBLAS picks for the CPU (sparse_spd_solver.h).
+static_assert(ResolutionParameters{}.maxContractedPoints <= std::size_t(kLargestPortableSystem),
+              "default contractions must stay within the portable solver's range");
 
 struct SkeletonParameters {
     ContractionParameters contraction;
