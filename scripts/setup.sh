@@ -26,6 +26,7 @@ PACKAGES=(
   xvfb xauth xdotool imagemagick python3 python3-matplotlib python3-pil python3-numpy
   python3-dev pybind11-dev python3-pytest python3-networkx python3-open3d
   libcgal-demo
+  locales
 )
 
 # What MeshLab 2022's stock plugins need but Debian only recommends: without them MeshLab

@@ -4,7 +4,10 @@
 // fixed seed, and read back. A reader may accept a mutated file or refuse it with
 // InvalidInput; anything else (another exception, a crash, a sanitizer report) is a defect.
 //
-//   reader_fuzz CORPUS_DIR WORK_DIR [--mutations N] [--seed S] [--isolate]
+//   reader_fuzz CORPUS_DIR WORK_DIR [--mutations N] [--seed S] [--isolate] [--locale NAME]
+//
+// Beyond crashes, oracles for misreads: a decimal comma in a line of coordinates, or an
+// ascii PLY vertex line with a value more or fewer than its header, must be refused.
 //
 // The test suite runs a few thousand executions; developers run millions the same way
 // (see the README). The input being read is always WORK_DIR/current.<ext>: after a crash
@@ -19,6 +22,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <clocale>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -40,7 +44,9 @@ namespace {
 
 const std::vector<std::string> kInterestingNumbers = {
     "-1", "0", "1", "255", "256", "65536", "2147483647", "2147483648", "-2147483648", "4294967295",
-    "4294967296", "18446744073709551615", "99999999999999999999", "1e308", "-1e308", "nan", "inf", "0.5", ""};
+    "4294967296", "18446744073709551615", "99999999999999999999", "1e308", "-1e308", "nan", "inf", "0.5", "",
+    // Beyond a double's range either way, subnormal, signed, hexadecimal, a decimal comma.
+    "1e400", "-1e400", "1e-400", "4.9e-324", "1e-310", "+1.5", "1E+308", "0x10", "1,5", "-0"};
 const std::vector<char> kInterestingBytes = {'\0', '\xff', '\x7f', '\x80', '\n', ' ', '-', '9', '.', 'e', '\r'};
 
 class Mutator {
@@ -51,7 +57,7 @@ public:
         const int steps = 1 + int(below(4));
         for (int s = 0; s < steps; ++s) {
             if (data.empty()) data.push_back(' ');
-            switch (below(7)) {
+            switch (below(9)) {
                 case 0: data[below(data.size())] ^= char(1u << below(8)); break;
                 case 1: data[below(data.size())] = kInterestingBytes[below(kInterestingBytes.size())]; break;
                 case 2: {  // delete a range
@@ -67,6 +73,8 @@ public:
                 }
                 case 4: data.resize(below(data.size() + 1)); break;  // truncate
                 case 5: replaceNumber(data); break;
+                case 7: changeRecordLength(data, below(data.size())); break;
+                case 8: decimalCommas(data, below(data.size())); break;
                 default: {  // a 4-byte binary value replaced by an extreme one
                     const std::uint32_t values[] = {0u, 0xffffffffu, 0x7fffffffu, 0x80000000u, 0xffu, 0x7f800000u};
                     const std::size_t at = below(data.size());
@@ -78,8 +86,42 @@ public:
         return data;
     }
 
-private:
+    // The line holding byte `at` loses its last value or gains one (an ascii record longer
+    // or shorter than its header says).
+    void changeRecordLength(Bytes& data, std::size_t at) {
+        const auto [begin, end] = lineAround(data, at);
+        if (below(2) == 0) {
+            const std::size_t blank = data.find_last_of(" \t", end == begin ? begin : end - 1);
+            if (blank != std::string::npos && blank >= begin) data.erase(blank, end - blank);
+        } else {
+            data.insert(end, " 7");
+        }
+    }
+
+    // Every decimal point of the line holding byte `at` becomes a comma ("1.5" -> "1,5").
+    static void decimalCommas(Bytes& data, std::size_t at) {
+        const auto [begin, end] = lineAround(data, at);
+        for (std::size_t i = begin + 1; i + 1 < end; ++i) {
+            if (data[i] == '.' && std::isdigit(static_cast<unsigned char>(data[i - 1])) &&
+                std::isdigit(static_cast<unsigned char>(data[i + 1]))) {
+                data[i] = ',';
+            }
+        }
+    }
+
+    // [begin, end) of the line holding byte `at`, without its newline.
+    static std::pair<std::size_t, std::size_t> lineAround(const Bytes& data, std::size_t at) {
+        if (data.empty()) return {0, 0};
+        at = std::min(at, data.size() - 1);
+        const std::size_t previous = at == 0 ? std::string::npos : data.rfind('\n', at - 1);
+        const std::size_t begin = previous == std::string::npos ? 0 : previous + 1;
+        const std::size_t end = std::min(data.find('\n', begin), data.size());
+        return {begin, end};
+    }
+
     std::size_t below(std::size_t n) { return n == 0 ? 0 : std::size_t(random_() % n); }
+
+private:
 
     // Replaces one run of digits (with its sign) by an interesting number.
     void replaceNumber(Bytes& data) {
@@ -154,6 +196,62 @@ void readWithEveryReader(const std::string& path, bool isSkeletonFormat, Tally& 
     if (isSkeletonFormat) attempt([&] { pcskeleton::readSkeleton(path); });
 }
 
+// The byte offsets of the lines every reader of the file reads as numbers: an ascii PLY's
+// first element (the vertices) and the coordinate lines of the text formats.
+std::vector<std::size_t> numberLines(const Bytes& data, const std::string& ext) {
+    std::vector<std::size_t> lines;
+    std::size_t begin = 0;
+    long plyRecords = -1;  // vertex lines still to come after end_header; -1 before it
+    long declared = 0;
+    bool ply = ext == ".ply";
+    if (ply && data.find("format ascii") == std::string::npos) return lines;
+    for (std::size_t line = 0; begin < data.size(); ++line) {
+        const std::size_t end = std::min(data.find('\n', begin), data.size());
+        const std::string text = data.substr(begin, end - begin);
+        if (ply) {
+            if (plyRecords > 0) lines.push_back(begin), --plyRecords;
+            if (plyRecords < 0 && declared == 0 && text.rfind("element vertex ", 0) == 0) declared = std::atol(text.c_str() + 15);
+            if (text == "end_header") plyRecords = declared;
+        } else if (ext == ".xyz" || (ext == ".off" && line >= 2)) {
+            if (!text.empty() && (std::isdigit(static_cast<unsigned char>(text[0])) || text[0] == '-')) lines.push_back(begin);
+        } else if ((ext == ".obj" || ext == ".cg") && text.rfind("v ", 0) == 0) {
+            lines.push_back(begin);
+        }
+        begin = end + 1;
+    }
+    return lines;
+}
+
+// Mutations no reader may accept, as accepting them would misread the file: a decimal
+// comma in a line of coordinates with decimals, and (ascii PLY) a vertex line with a value
+// more or fewer than the header declares.
+void checkMisreadOracles(const Bytes& original, const std::string& ext, const std::string& current,
+                         bool isSkeletonFormat, Mutator& mutator, long mutations, Tally& tally) {
+    const std::vector<std::size_t> lines = numberLines(original, ext);
+    if (lines.empty()) return;
+    for (long m = 0; m < mutations; ++m) {
+        Bytes data = original;
+        const std::size_t at = lines[mutator.below(lines.size())];
+        const bool comma = ext != ".ply" || mutator.below(2) == 0;
+        if (comma) {
+            Mutator::decimalCommas(data, at);
+            if (data == original) continue;  // no decimals on that line
+        } else {
+            mutator.changeRecordLength(data, at);
+        }
+        std::ofstream(current, std::ios::binary | std::ios::trunc) << data;
+        const Tally before = tally;
+        readWithEveryReader(current, isSkeletonFormat, tally);
+        if (tally.accepted != before.accepted) {
+            std::cerr << "DEFECT: misread, accepted with " << (comma ? "decimal commas" : "a record of another length")
+                      << " at byte " << at << ": kept as " << current << ".misread\n";
+            fs::copy_file(current, current + ".misread", fs::copy_options::overwrite_existing);
+            tally.defects += tally.accepted - before.accepted;
+            tally.accepted = before.accepted;
+        }
+    }
+}
+
 Bytes readAll(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
     return Bytes(std::istreambuf_iterator<char>(in), {});
@@ -163,7 +261,7 @@ Bytes readAll(const fs::path& path) {
 
 int main(int argc, char** argv) {
     if (argc < 3) {
-        std::cerr << "usage: reader_fuzz CORPUS_DIR WORK_DIR [--mutations N] [--seed S]\n";
+        std::cerr << "usage: reader_fuzz CORPUS_DIR WORK_DIR [--mutations N] [--seed S] [--isolate] [--locale NAME]\n";
         return 2;
     }
     const fs::path corpus = argv[1], work = argv[2];
@@ -174,6 +272,11 @@ int main(int argc, char** argv) {
         if (option == "--isolate") isolate = true;
         else if (option == "--mutations" && i + 1 < argc) mutations = std::atol(argv[++i]);
         else if (option == "--seed" && i + 1 < argc) seed = std::strtoull(argv[++i], nullptr, 10);
+        else if (option == "--locale" && i + 1 < argc) {
+            // The readers must read the same in a locale with a decimal comma (MeshLab runs in the user's).
+            const char* name = argv[++i];
+            if (!std::setlocale(LC_ALL, name)) { std::cerr << "no locale " << name << '\n'; return 2; }
+        }
         else { std::cerr << "unknown option " << option << '\n'; return 2; }
     }
     fs::create_directories(work);
@@ -204,6 +307,7 @@ int main(int argc, char** argv) {
                 ++tally.defects;
             }
         }
+        checkMisreadOracles(original, ext, current, isSkeletonFormat, mutator, mutations / 4, tally);
         total.executions += tally.executions;
         total.accepted += tally.accepted;
         total.refused += tally.refused;

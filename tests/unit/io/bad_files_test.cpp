@@ -57,6 +57,14 @@ TEST(BadFiles, EachIsRefusedWithItsReason) {
         {"skeleton_edge_out_of_range.obj", true, "refers to vertex 99999999"},
         {"skeleton_edge_int_min.obj", true, "'-2147483648' is not a vertex index"},
         {"ply_binary_list_length_garbage.ply", true, "claims 255 items"},
+        {"ply_ascii_record_longer_than_header.ply", false, "(line 8): the line holds more values than the header"},
+        {"ply_ascii_record_shorter_than_header.ply", false, "(line 9): the line holds fewer values than the header"},
+        {"ply_ascii_more_records_than_declared.ply", false, "line 12: the file goes on after the last record"},
+        {"skeleton_ply_edge_line_four_values.ply", true, "(line 14): the line holds more values"},
+        {"xyz_decimal_commas.xyz", false, "line 1: the numbers are not all separated alike"},
+        {"off_decimal_commas.off", false, "line 3: vertex 0 of 3 does not have three coordinates (decimal commas"},
+        {"obj_decimal_commas.obj", false, "line 1: a vertex (v) needs three numbers (decimal commas"},
+        {"skeleton_obj_radius_decimal_comma.obj", true, "line 1: the value after a vertex's coordinates"},
     };
     for (const Case& c : cases) {
         const std::string error = c.asSkeleton ? skeletonError(c.file) : pointsError(c.file);

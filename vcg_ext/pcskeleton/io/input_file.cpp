@@ -1,11 +1,15 @@
 #include "pcskeleton/io/input_file.h"
 
+#include <dirent.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
+#include <climits>
+#include <csignal>
 #include <cerrno>
+#include <charconv>
 #include <cstdlib>
 #include <cstring>
 #include <limits>
@@ -98,14 +102,60 @@ void InputFile::fail(const std::string& why) const { throw InvalidInput("Cannot 
 
 void InputFile::failAtLine(const std::string& why) const { fail("line " + std::to_string(lineNumber_) + ": " + why); }
 
-bool readNumber(const char*& cursor, double& value) {
-    while (*cursor == ' ' || *cursor == '\t' || *cursor == ',') ++cursor;
-    char* end = nullptr;
-    value = std::strtod(cursor, &end);
-    if (end == cursor) return false;
-    if (*end != '\0' && *end != ' ' && *end != '\t' && *end != ',') return false;
+bool parseNumber(const char* first, const char* last, double& value) {
+    if (first != last && *first == '+') ++first;  // strtod's, not from_chars'
+    // from_chars reads the same digits in every locale (MeshLab runs in the user's, where
+    // strtod may take a comma for the decimal point).
+    const auto [end, error] = std::from_chars(first, last, value);
+    if (end != last || end == first) return false;
+    if (error == std::errc::result_out_of_range) {
+        // Beyond a double's range: to infinity or zero, as strtod rounds, for the checks
+        // of finite coordinates to name.
+        const char* exponent = std::find_if(first, last, [](char c) { return c == 'e' || c == 'E'; });
+        const bool negative = *first == '-';
+        const bool tiny = exponent != last && exponent + 1 != last && exponent[1] == '-';
+        value = tiny ? (negative ? -0.0 : 0.0)
+                     : (negative ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity());
+    } else if (error != std::errc()) {
+        return false;
+    }
+    return true;
+}
+
+bool readNumber(const char*& cursor, double& value, NumberSeparators separators) {
+    const auto isSeparator = [&](char c) {
+        return c == ' ' || c == '\t' || (separators == NumberSeparators::BlanksOrCommas && c == ',');
+    };
+    while (isSeparator(*cursor)) ++cursor;
+    const char* end = cursor;
+    while (*end != '\0' && !isSeparator(*end)) ++end;
+    if (end == cursor || !parseNumber(cursor, end, value)) return false;
     cursor = end;
     return true;
+}
+
+bool mixesCommasAndBlanks(const std::string& line) {
+    // Each separator between two numbers, as (holds a comma, holds a blank).
+    int kinds = 0;  // bit per kind seen: 1 comma only, 2 blank only, 4 comma and blank
+    bool inNumber = false, sawNumber = false, comma = false, blank = false;
+    for (char c : line) {
+        const bool isComma = c == ',', isBlank = c == ' ' || c == '\t';
+        if (!isComma && !isBlank) {
+            if (!inNumber && sawNumber) kinds |= comma && blank ? 4 : comma ? 1 : 2;
+            inNumber = sawNumber = true;
+            comma = blank = false;
+        } else {
+            inNumber = false;
+            comma = comma || isComma;
+            blank = blank || isBlank;
+        }
+    }
+    // One kind throughout ("1 2 3", "1,2,3", "1, 2, 3"), else "1,5 2,5" or "0,5, 1,5".
+    return kinds != 0 && (kinds & (kinds - 1)) != 0;
+}
+
+std::string decimalCommaHint(const std::string& line) {
+    return line.find(',') == std::string::npos ? "" : " (decimal commas such as '1,5' are not read: write '1.5')";
 }
 
 std::string extensionOf(const std::string& path) {
@@ -128,35 +178,118 @@ bool fileExists(const std::string& path) {
     return ::stat(path.c_str(), &status) == 0;
 }
 
-void writeFileAtomically(const std::string& path, const std::function<void(const std::string&)>& write) {
-    // The temporary sits next to the target, so that rename() stays on one file system.
-    std::string pattern = path + ".partial-XXXXXX";
+namespace {
+
+struct TemporaryName {
+    std::string folder;  // "" for the current one
+    std::string prefix;  // "<name>.partial-": the pid and a unique suffix follow
+};
+
+// The temporary sits next to the target, so that rename() stays on one file system; its
+// name holds the writing process's id, so that a later write to the same file can tell
+// the leftovers of a killed run from the temporaries of a live one. A long name is
+// shortened so that the temporary's fits where the file's does.
+TemporaryName temporaryName(const std::string& path) {
+    const auto slash = path.find_last_of('/');
+    TemporaryName name;
+    name.folder = slash == std::string::npos ? "" : path.substr(0, slash + 1);
+    const std::string file = slash == std::string::npos ? path : path.substr(slash + 1);
+    constexpr std::size_t kRoomForSuffix = 40;  // ".partial-" + pid + "-XXXXXX"
+    name.prefix = file.substr(0, std::min(file.size(), std::size_t(NAME_MAX) - kRoomForSuffix)) + ".partial-";
+    return name;
+}
+
+// Removes "<prefix><pid>-XXXXXX" files of processes that no longer run.
+void removeStaleTemporaries(const TemporaryName& name) {
+    DIR* folder = ::opendir(name.folder.empty() ? "." : name.folder.c_str());
+    if (!folder) return;
+    std::vector<std::string> stale;
+    while (const dirent* entry = ::readdir(folder)) {
+        const std::string file = entry->d_name;
+        if (file.compare(0, name.prefix.size(), name.prefix) != 0) continue;
+        const char* digits = file.c_str() + name.prefix.size();
+        char* end = nullptr;
+        const long pid = std::strtol(digits, &end, 10);
+        if (end == digits || *end != '-' || pid <= 0) continue;
+        if (::kill(pid_t(pid), 0) != 0 && errno == ESRCH) stale.push_back(name.folder + file);
+    }
+    ::closedir(folder);
+    for (const std::string& file : stale) std::remove(file.c_str());
+}
+
+// Creates an empty temporary for `path`: its name, or "" and the errno that prevented it.
+std::string createTemporary(const std::string& path, int& error) {
+    const TemporaryName name = temporaryName(path);
+    removeStaleTemporaries(name);
+    std::string pattern = name.folder + name.prefix + std::to_string(::getpid()) + "-XXXXXX";
     const int descriptor = ::mkstemp(pattern.data());
     if (descriptor < 0) {
-        throw InvalidInput("Cannot write '" + path + "': " + std::strerror(errno) + ".");
+        error = errno;
+        return "";
     }
     ::close(descriptor);
+    return pattern;
+}
+
+}  // namespace
+
+void checkWritable(const std::string& path) {
+    const auto refuse = [&](const std::string& why) { throw InvalidInput("Cannot write '" + path + "': " + why); };
+    if (path.empty()) refuse("no file name.");
+    const TemporaryName name = temporaryName(path);
+    const std::string file = path.substr(name.folder.size());
+    const long longest = ::pathconf(name.folder.empty() ? "." : name.folder.c_str(), _PC_NAME_MAX);
+    if (file.empty()) refuse("no file name.");
+    if (file.size() > std::size_t(longest > 0 ? longest : NAME_MAX)) {
+        refuse("the file name is " + std::to_string(file.size()) + " bytes long, longer than the " +
+               std::to_string(longest > 0 ? longest : NAME_MAX) + " its folder allows.");
+    }
+    struct stat status {};
+    if (::stat(path.c_str(), &status) == 0) {
+        if (S_ISDIR(status.st_mode)) refuse("it is a directory.");
+    } else if (errno != ENOENT) {
+        refuse(std::string(std::strerror(errno)) + ".");
+    }
+    // The folder must exist and take a new file: made and removed at once.
+    int error = 0;
+    const std::string probe = createTemporary(path, error);
+    if (probe.empty()) {
+        std::string folder = name.folder.empty() ? "." : name.folder;
+        if (folder.size() > 1) folder.pop_back();  // its '/'
+        struct stat folderStatus {};
+        if (error == ENOENT && ::stat(folder.c_str(), &folderStatus) != 0) {
+            refuse("the folder '" + folder + "' does not exist.");
+        }
+        refuse("a file cannot be created in the folder '" + folder + "' (" + std::strerror(error) + ").");
+    }
+    std::remove(probe.c_str());
+}
+
+void writeFileAtomically(const std::string& path, const std::function<void(const std::string&)>& write) {
+    int error = 0;
+    const std::string temporary = createTemporary(path, error);
+    if (temporary.empty()) throw InvalidInput("Cannot write '" + path + "': " + std::strerror(error) + ".");
     try {
-        write(pattern);
+        write(temporary);
     } catch (const InvalidInput& e) {
-        std::remove(pattern.c_str());
+        std::remove(temporary.c_str());
         // The writer names the temporary; the user knows the file by its real name.
         std::string message = e.problem().description;
-        for (auto at = message.find(pattern); at != std::string::npos; at = message.find(pattern)) {
-            message.replace(at, pattern.size(), path);
+        for (auto at = message.find(temporary); at != std::string::npos; at = message.find(temporary)) {
+            message.replace(at, temporary.size(), path);
         }
         throw InvalidInput(message);
     } catch (...) {
-        std::remove(pattern.c_str());
+        std::remove(temporary.c_str());
         throw;
     }
     // mkstemp makes the file private (0600); give it the permissions a new file would get.
     const mode_t mask = ::umask(0);
     ::umask(mask);
-    ::chmod(pattern.c_str(), 0666 & ~mask);
-    if (std::rename(pattern.c_str(), path.c_str()) != 0) {
+    ::chmod(temporary.c_str(), 0666 & ~mask);
+    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
         const std::string reason = std::strerror(errno);
-        std::remove(pattern.c_str());
+        std::remove(temporary.c_str());
         throw InvalidInput("Cannot write '" + path + "': " + reason + ".");
     }
 }

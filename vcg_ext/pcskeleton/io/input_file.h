@@ -56,10 +56,28 @@ private:
     std::size_t begin_ = 0, end_ = 0;
 };
 
+// Reads the whole of [first, last) as one number, in the same way in every locale; false
+// when it is not one ("1.5abc", "1,5"). "nan" and "inf" are read, and numbers beyond a
+// double's range become infinite or zero, for the checks of coordinates to name them.
+bool parseNumber(const char* first, const char* last, double& value);
+
+// Which characters may stand between the numbers of a line: blanks (OFF, OBJ, PLY), or
+// blanks and commas (XYZ files are often comma separated).
+enum class NumberSeparators { Blanks, BlanksOrCommas };
+
 // Reads the next number of a text line and moves the cursor past it; false when the
-// line has no further number or when one is glued to other characters ("1.5abc").
-// Separators are blanks and commas. "nan" and "inf" are read, for the checks to name them.
-bool readNumber(const char*& cursor, double& value);
+// line has no further number or when one is glued to other characters ("1.5abc", or
+// "1,5" where commas do not separate numbers).
+bool readNumber(const char*& cursor, double& value, NumberSeparators separators = NumberSeparators::Blanks);
+
+// True when the separators between the numbers of a line are not all of one kind (a
+// comma, blanks, or a comma with blanks), as in "1,5 2,5 3,5" or "0,5, 1,5, 2,5" (decimal
+// commas), which must not be read as six numbers. Comma-separated values keep one kind.
+bool mixesCommasAndBlanks(const std::string& line);
+
+// For a number line that could not be read: " (decimal commas such as '1,5' are not read:
+// write '1.5')" when it holds a comma, else "".
+std::string decimalCommaHint(const std::string& line);
 
 // The lower-case extension of a file name without the dot ("" if none).
 std::string extensionOf(const std::string& path);
@@ -70,9 +88,16 @@ bool sameFile(const std::string& a, const std::string& b);
 
 bool fileExists(const std::string& path);
 
+// Throws InvalidInput, naming the reason, unless a file can be written at `path`: it is
+// not a directory, its name fits the folder, and the folder exists and takes a new file
+// (tried by making and removing a temporary there). For checks before any work.
+void checkWritable(const std::string& path);
+
 // Writes a file through write(temporaryPath) and renames it to path only once it is
 // complete, so that a failed or interrupted write never leaves a truncated file in place
 // of an existing one. write() throws (InvalidInput) on failure; the temporary is removed.
+// Temporaries are "<name>.partial-<pid>-XXXXXX": those of processes that are gone (a
+// killed run) are removed by the next write to the same file.
 void writeFileAtomically(const std::string& path, const std::function<void(const std::string&)>& write);
 
 }  // namespace pcskeleton

@@ -176,7 +176,13 @@ public:
 
     void readAll() {
         for (record_ = 0; record_ < element_.count; ++record_) {
+            // An ascii record is one line: a line with more or fewer values than the header
+            // declares is refused, where reading on would shift every later record.
+            if (format_ == PlyFormat::Ascii) startRecordLine();
             for (std::size_t p = 0; p < element_.properties.size(); ++p) readProperty(p);
+            if (format_ == PlyFormat::Ascii && line_.find_first_not_of(" \t", position_) != std::string::npos) {
+                fail("the line holds more values than the header declares for one '" + element_.name + "' record.");
+            }
             if (reader_ && reader_->record) reader_->record(values_.data());
         }
     }
@@ -215,12 +221,18 @@ private:
 
     std::uint64_t lineLeft() const { return line_.size() - std::min(line_.size(), position_); }
 
-    std::string nextToken() {
-        for (;;) {
-            position_ = line_.find_first_not_of(" \t", position_);
-            if (position_ != std::string::npos) break;
+    // The next line that is not blank.
+    void startRecordLine() {
+        do {
             if (!file_.readLine(line_)) fail("the file ends here.");
-            position_ = 0;
+        } while (line_.find_first_not_of(" \t") == std::string::npos);
+        position_ = 0;
+    }
+
+    std::string nextToken() {
+        position_ = line_.find_first_not_of(" \t", position_);
+        if (position_ == std::string::npos) {
+            fail("the line holds fewer values than the header declares for one '" + element_.name + "' record.");
         }
         const std::size_t end = std::min(line_.find_first_of(" \t", position_), line_.size());
         std::string token = line_.substr(position_, end - position_);
@@ -241,8 +253,10 @@ private:
             }
             return double(value);
         }
-        const double value = std::strtod(token.c_str(), &end);
-        if (end == token.c_str() || *end != '\0') fail("'" + token + "' is not a number.");
+        double value = 0;
+        if (!parseNumber(token.data(), token.data() + token.size(), value)) {
+            fail("'" + token + "' is not a number" + decimalCommaHint(token) + ".");
+        }
         return value;
     }
 
@@ -276,6 +290,18 @@ void readPly(InputFile& file, const std::vector<PlyElementReader>& readers) {
         }
         if (reader && reader->begin) reader->begin(element);
         ElementDecoder(file, header.format, element, reader).readAll();
+    }
+    // Lines after the last declared record mean that the header's counts are not the file's.
+    if (header.format == PlyFormat::Ascii && last == header.elements.size()) {
+        for (std::string line; file.readLine(line);) {
+            if (line.find_first_not_of(" \t") != std::string::npos) {
+                file.failAtLine("the file goes on after the last record the header declares (" +
+                                (header.elements.empty() ? std::string("none")
+                                                         : std::to_string(header.elements.back().count) + " of element '" +
+                                                               header.elements.back().name + "'") +
+                                "): the header's counts are wrong.");
+            }
+        }
     }
 }
 

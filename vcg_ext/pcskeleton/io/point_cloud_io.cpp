@@ -36,9 +36,14 @@ PointList readXyz(InputFile& file) {
     while (file.readLine(line)) {
         const auto first = line.find_first_not_of(" \t");
         if (first == std::string::npos || line[first] == '#') continue;
+        if (mixesCommasAndBlanks(line)) {
+            file.failAtLine("the numbers are not all separated alike (by commas, blanks, or both): decimal commas "
+                            "('1,5') are not read; write numbers with a dot ('1.5').");
+        }
         const char* cursor = line.c_str();
         Point p;
-        if (!readNumber(cursor, p.x()) || !readNumber(cursor, p.y()) || !readNumber(cursor, p.z())) {
+        constexpr NumberSeparators commas = NumberSeparators::BlanksOrCommas;
+        if (!readNumber(cursor, p.x(), commas) || !readNumber(cursor, p.y(), commas) || !readNumber(cursor, p.z(), commas)) {
             file.failAtLine("a point line starts with three numbers (x y z).");
         }
         points.push_back(p);
@@ -89,7 +94,7 @@ PointList readOffVertices(InputFile& file) {
         Point p;
         if (!readNumber(cursor, p.x()) || !readNumber(cursor, p.y()) || !readNumber(cursor, p.z())) {
             file.failAtLine("vertex " + std::to_string(i) + " of " + std::to_string(vertices) +
-                            " does not have three coordinates.");
+                            " does not have three coordinates" + decimalCommaHint(line) + ".");
         }
         points.push_back(p);
     }
@@ -109,7 +114,7 @@ PointList readObjVertices(InputFile& file) {
         ++cursor;
         Point p;
         if (!readNumber(cursor, p.x()) || !readNumber(cursor, p.y()) || !readNumber(cursor, p.z())) {
-            file.failAtLine("a vertex (v) needs three numbers.");
+            file.failAtLine("a vertex (v) needs three numbers" + decimalCommaHint(line) + ".");
         }
         points.push_back(p);
     }

@@ -132,10 +132,15 @@ SkeletonGraph readSkeletonLines(InputFile& file, const std::string& edgeKeyword)
             const char* cursor = line.c_str() + line.find('v') + 1;
             Point p;
             if (!readNumber(cursor, p.x()) || !readNumber(cursor, p.y()) || !readNumber(cursor, p.z())) {
-                file.failAtLine("a vertex (v) needs three numbers.");
+                file.failAtLine("a vertex (v) needs three numbers" + decimalCommaHint(line) + ".");
             }
             double radius = 0.0;
-            if (!readNumber(cursor, radius) || !std::isfinite(radius)) radius = 0.0;
+            while (*cursor == ' ' || *cursor == '\t') ++cursor;
+            if (*cursor != '\0' && !readNumber(cursor, radius)) {
+                file.failAtLine("the value after a vertex's coordinates (its radius) is not a number" +
+                                decimalCommaHint(line) + ".");
+            }
+            if (!std::isfinite(radius)) radius = 0.0;
             skeleton.nodes.push_back(p);
             skeleton.radii.push_back(radius);
         } else if (keyword == edgeKeyword) {
