@@ -286,7 +286,14 @@ TEST_F(SkeletonFilterTest, ARefusedParameterIsNamedByItsDialogLabel) {
     RichParameterList p = defaults(a);
     p.setValue("contractionScale", FloatValue(0.5f));
     ASSERT_FALSE(apply(a, p));
-    EXPECT_EQ(plugin->errorMsg().toStdString(), "'Contraction scale s_L' must be at least 1.");
+    EXPECT_EQ(plugin->errorMsg().toStdString(), "'Contraction scale s_L' must be between 1 and 1000.");
+
+    // Infinity (a script may give it) is refused by name, never computed with.
+    p = defaults(a);
+    p.setValue("terminationThreshold", FloatValue(std::numeric_limits<float>::infinity()));
+    ASSERT_FALSE(apply(a, p));
+    EXPECT_NE(plugin->errorMsg().toStdString().find("must be at least 0 and below 1"), std::string::npos)
+        << plugin->errorMsg().toStdString();
 
     p = defaults(a);
     p.setValue("linkLimit", FloatValue(-1.0f));

@@ -173,6 +173,20 @@ TEST(CurveSkeleton, ScaleDoesNotChangeTheGraph) {
     }
 }
 
+// Down to the smallest and up to the largest scale whose squared distances a double
+// holds, the same skeleton (beyond, point_cloud_input_test: refused with the reason).
+TEST(CurveSkeleton, ExtremeScalesKeepTheTorusCycle) {
+    const PointList torus = shapes::torus(3000, 1.0, 0.25);
+    const SkeletonResult reference = computeCurveSkeleton(torus);
+    for (double scale : {1e99, 1e-99}) {
+        PointList scaled;
+        for (const Point& p : torus) scaled.push_back(p * scale);
+        const SkeletonResult result = computeCurveSkeleton(scaled);
+        EXPECT_EQ(analyseTopology(result.skeleton).cycles, 1) << scale;
+        EXPECT_EQ(result.skeleton.edges, reference.skeleton.edges) << scale;
+    }
+}
+
 TEST(CurveSkeleton, SamplingRadiusMustBeAFraction) {
     SkeletonParameters p;
     p.thinning.sampleRadius = 0;
@@ -388,6 +402,23 @@ TEST(MultiResolution, JustOverTheThresholdWithOutliersContractsEveryOtherPoint) 
 }
 
 // Long work shows progress: the subsample's steps first, never going backwards, to 100.
+// Scanners and merged scans repeat points exactly: 16 copies of each point (more than the
+// outlier test's neighbours) are one point each, not a cloud of isolated clumps.
+TEST(MultiResolution, ExactDuplicatesAreOnePointEach) {
+    const PointList torus = shapes::torus(1000, 1.0, 0.25);
+    PointList copies;
+    for (int copy = 0; copy < 16; ++copy) copies.insert(copies.end(), torus.begin(), torus.end());
+    SkeletonParameters parameters;
+    ASSERT_GT(copies.size(), parameters.resolution.maxContractedPoints);
+    const SkeletonResult result = computeCurveSkeleton(copies, parameters);
+    EXPECT_EQ(analyseTopology(result.skeleton).cycles, 1);
+    EXPECT_EQ(result.quality.inputOutliers, 0u);
+    ASSERT_EQ(result.skeleton.pointNode.size(), copies.size());
+    for (std::size_t i = 0; i < copies.size(); ++i) {
+        EXPECT_EQ(result.skeleton.pointNode[i], result.skeleton.pointNode[i % torus.size()]) << i;
+    }
+}
+
 TEST(MultiResolution, ProgressRisesThroughTheSubsample) {
     const PointList cloud = shapes::torus(12000, 1.0, 0.25, 17);
     SkeletonParameters parameters;

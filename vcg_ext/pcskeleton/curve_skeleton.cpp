@@ -30,15 +30,16 @@ constexpr std::size_t kFewestUsefulContractedPoints = 2000;
 
 void refuseWorkLargerThanMemory(std::size_t points, const ResolutionParameters& parameters) {
     const double needed = estimatedPeakBytes(points, parameters.maxContractedPoints);
-    const double limit =
-        parameters.memoryLimit > 0 ? parameters.memoryLimit : kUsableShareOfMemory * physicalMemoryBytes();
+    const MemoryAllowance allowance = usableMemory();
+    const bool userLimit = parameters.memoryLimit > 0 && !(allowance.bytes > 0 && allowance.bytes < parameters.memoryLimit);
+    const double limit = userLimit ? parameters.memoryLimit : allowance.bytes;
     if (!(limit > 0) || needed <= limit) return;
     std::ostringstream text;
     text.precision(2);
     text << "A skeleton of " << points << " points, " << (parameters.maxContractedPoints == 0 ? "all" : "at most")
          << " " << (parameters.maxContractedPoints == 0 ? points : std::min(points, parameters.maxContractedPoints))
          << " of them contracted, needs about " << needed / 1e9 << " GB of memory, more than the "
-         << limit / 1e9 << " GB " << (parameters.memoryLimit > 0 ? "allowed" : "this machine can give");
+         << limit / 1e9 << " GB " << (userLimit ? std::string("allowed") : std::string("that ") + allowance.limit + " leaves");
     // The most contracted points that would fit, every other point only carried.
     const double fitting = (limit - kBytesPerCarriedPoint * double(points)) / (kBytesPerContractedPoint - kBytesPerCarriedPoint);
     if (fitting >= double(kFewestUsefulContractedPoints)) {
@@ -177,13 +178,35 @@ ContractionInput::ContractionInput(const PointList& input, const ResolutionParam
     const Stopwatch stopwatch;
     // The grid needs finite coordinates; the contraction would refuse these anyway.
     rejectNonFinite(input, "input points", Remedy::take(Step::RemoveNonFinitePoints));
+    rejectUnrepresentableScale(input, "input points");
     checkOutlierParameters(outliers);
     report(progress, 0, "Multi-resolution: outliers of the whole cloud");
-    const std::vector<char> outlier = findOutliers(input, outliers);
-    outliers_ = std::size_t(std::count(outlier.begin(), outlier.end(), 1));
+    // The outlier test and the grid see each position once (a point repeated more often than
+    // the test has neighbours would be alone with its copies); each copy then follows its
+    // position's keeper.
+    const ExactDuplicates duplicates = findExactDuplicates(input);
+    PointList distinct;
+    if (duplicates.any()) {
+        distinct.reserve(duplicates.firstOf.size());
+        for (int first : duplicates.firstOf) distinct.push_back(input[std::size_t(first)]);
+    }
+    const PointList& positions = duplicates.any() ? distinct : input;
+    const std::vector<char> outlier = findOutliers(positions, outliers);
     report(progress, 80, "Multi-resolution: subsample");
-    subsample_ = spreadSubsample(input, parameters.maxContractedPoints, outlier);
-    kept_ = keptPoints(input, subsample_);
+    subsample_ = spreadSubsample(positions, parameters.maxContractedPoints, outlier);
+    kept_ = keptPoints(positions, subsample_);
+    if (duplicates.any()) {
+        for (int& kept : subsample_.kept) kept = duplicates.firstOf[std::size_t(kept)];
+        std::vector<int> keeperOf(input.size());
+        for (std::size_t i = 0; i < input.size(); ++i) {
+            const std::size_t group = std::size_t(duplicates.groupOf[i]);
+            keeperOf[i] = subsample_.keeperOf[group];
+            outliers_ += outlier[group];
+        }
+        subsample_.keeperOf = std::move(keeperOf);
+    } else {
+        outliers_ = std::size_t(std::count(outlier.begin(), outlier.end(), 1));
+    }
     subsampled_ = true;
     report(progress, 100, "Multi-resolution: subsample taken");
     seconds_ = stopwatch.seconds();

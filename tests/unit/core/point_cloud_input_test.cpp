@@ -1,10 +1,12 @@
 // The input checks (point_cloud_input), reached as a user reaches them, through the
 // contraction: a clear InvalidInput for a cloud that cannot be processed, never a crash.
 #include <pcskeleton/contraction/laplacian_contraction.h>
+#include <pcskeleton/core/point_cloud_input.h>
 #include "support/sampled_shapes.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
 
 using namespace pcskeleton;
@@ -50,4 +52,44 @@ TEST(BadInput, CollinearPoints) {
 TEST(BadInput, AllPointsIdentical) {
     const PointList same(50, Point(1, 2, 3));
     EXPECT_NE(errorOf(same).find("1 distinct points (50 with duplicates)"), std::string::npos) << errorOf(same);
+}
+
+// Coordinates whose squared differences overflow or underflow are refused with the reason;
+// within the range every scale gives the same skeleton (curve_skeleton_test).
+TEST(BadInput, ScalesBeyondWhatSquaredDistancesHold) {
+    const PointList torus = shapes::torus(3000, 1.0, 0.25);
+    PointList huge, tiny;
+    for (const Point& p : torus) huge.push_back(p * 1e154), tiny.push_back(p * 1e-200);
+    EXPECT_NE(errorOf(huge).find("coordinates up to 1.25e+154"), std::string::npos) << errorOf(huge);
+    EXPECT_NE(errorOf(tiny).find("span only"), std::string::npos) << errorOf(tiny);
+}
+
+TEST(ExactDuplicates, GroupsAreNumberedByFirstAppearance) {
+    const PointList points{Point(1, 0, 0), Point(0, 0, 0), Point(1, 0, 0), Point(2, 0, 0), Point(0, 0, 0)};
+    const ExactDuplicates d = findExactDuplicates(points);
+    ASSERT_TRUE(d.any());
+    EXPECT_EQ(d.groupOf, (std::vector<int>{0, 1, 0, 2, 1}));
+    EXPECT_EQ(d.firstOf, (std::vector<int>{0, 1, 3}));
+    EXPECT_FALSE(findExactDuplicates({Point(0, 0, 0), Point(1, 0, 0)}).any());
+}
+
+// Parameters that are not finite or beyond any sensible value are refused by name.
+TEST(BadInput, NonFiniteAndAbsurdParameters) {
+    const PointList torus = shapes::torus(2000, 1.0, 0.25);
+    const double inf = std::numeric_limits<double>::infinity();
+    ContractionParameters p;
+    p.initialContractionWeight = inf;
+    EXPECT_NE(errorOf(torus, p).find("W_L0"), std::string::npos) << errorOf(torus, p);
+    p = {};
+    p.contractionScale = 1e308;
+    EXPECT_NE(errorOf(torus, p).find("between 1 and 1000"), std::string::npos) << errorOf(torus, p);
+    p = {};
+    p.terminationThreshold = inf;
+    EXPECT_NE(errorOf(torus, p).find("below 1"), std::string::npos) << errorOf(torus, p);
+    p = {};
+    p.outliers.isolationFactor = inf;
+    EXPECT_NE(errorOf(torus, p).find("finite"), std::string::npos) << errorOf(torus, p);
+    p = {};
+    p.maxAttractionWeight = std::nan("");
+    EXPECT_NE(errorOf(torus, p).find("up to 1e8"), std::string::npos) << errorOf(torus, p);
 }

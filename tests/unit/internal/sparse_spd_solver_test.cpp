@@ -2,7 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
+#include <unistd.h>
+
 #include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <new>
 #include <vector>
 
 using namespace pcskeleton;
@@ -53,3 +59,30 @@ TEST(SparseSpdSolver, AutomaticIsEigenUpToThePortableLimitAndCholmodAbove) {
     EXPECT_LT((cholmod - eigen).cwiseAbs().maxCoeff(), 1e-12);
     EXPECT_FALSE(cholmod == eigen);
 }
+
+// Running out of memory inside CHOLMOD is std::bad_alloc, never a crash on a missing factor
+// nor a "numerical failure". In a child process whose address space is capped just above
+// what it maps already (AddressSanitizer reserves terabytes of it: not under ASan).
+#if !defined(__SANITIZE_ADDRESS__)
+TEST(SparseSpdSolverDeathTest, RunningOutOfMemoryInCholmodIsBadAlloc) {
+    GTEST_FLAG_SET(death_test_style, "threadsafe");
+    const SparseSpdSolver::Matrix large = gridSystem(400);  // 160000 unknowns: ~100 MB of factor
+    const auto outOfMemory = [&] {
+        std::ifstream statm("/proc/self/statm");
+        double pages = 0;
+        statm >> pages;
+        const rlim_t mapped = rlim_t(pages * double(sysconf(_SC_PAGE_SIZE)));
+        const rlimit cap{mapped + (16u << 20), mapped + (16u << 20)};
+        setrlimit(RLIMIT_AS, &cap);
+        try {
+            SparseSpdSolver solver(LinearSolver::Cholmod);
+            solver.factorize(large);
+            solver.solve(Eigen::MatrixXd::Ones(large.rows(), 3));
+        } catch (const std::bad_alloc&) {
+            std::_Exit(42);
+        }
+        std::_Exit(0);
+    };
+    EXPECT_EXIT(outOfMemory(), ::testing::ExitedWithCode(42), "");
+}
+#endif

@@ -329,6 +329,20 @@ TEST(Reconstruction, TooFewDistinctPointsAreRefusedWithTheCountAndTheMinimum) {
                   atResolution(32));
 }
 
+// A stray node far away, or radii of another scale, make the grid so coarse that the
+// points fall into a few cells: the refusal names the skeleton, which is what is wrong.
+TEST(Reconstruction, AStrayNodeOrHugeRadiiAreTheSkeletonsProblem) {
+    const PointList scan = torusScanWithGap();
+    SkeletonGraph stray = ringSkeleton();
+    stray.nodes.push_back(Point(1e4, 0, 0));
+    stray.radii.push_back(0.25);
+    expectRefusal(scan, stray, "1 of 25 skeleton nodes lie far outside the points (first: node 24", atResolution(32));
+    SkeletonGraph huge = ringSkeleton();
+    huge.radii.assign(huge.nodeCount(), 1e6);
+    expectRefusal(scan, huge, "24 of 24 skeleton nodes have a radius larger than the points' bounding-box diagonal",
+                  atResolution(32));
+}
+
 TEST(Reconstruction, ReportsProgressUpToCompletion) {
     std::vector<int> percents;
     reconstructFromSkeleton(torusScanWithGap(), ringSkeleton(), atResolution(32),

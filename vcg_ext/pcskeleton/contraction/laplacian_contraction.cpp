@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <new>
 #include <numeric>
 
 namespace pcskeleton {
@@ -27,14 +28,23 @@ void checkParameters(const ContractionParameters& p) {
     };
     require(p.neighbourCount == 0 || p.neighbourCount >= 4, Parameter::NeighbourCount,
             "must be 0 (automatic) or at least 4.");
-    require(p.initialContractionWeight >= 0, Parameter::InitialContractionWeight, "must be >= 0 (0 = automatic).");
-    require(p.initialAttractionWeight > 0, Parameter::InitialAttractionWeight, "must be positive.");
-    require(p.contractionScale >= 1, Parameter::ContractionScale, "must be at least 1.");
-    require(p.maxContractionWeight > 0, Parameter::MaxContractionWeight, "must be positive.");
-    require(p.maxAttractionWeight > 0, Parameter::MaxAttractionWeight, "must be positive.");
-    require(p.laplacianRowLimit > 0, Parameter::LaplacianRowLimit, "must be positive.");
+    // Weights are relative to the normalised cloud's (its longest side is 1.6): beyond this,
+    // the other term of the system falls below the solver's precision.
+    constexpr double kLargestWeight = 1e8;
+    const auto weight = [&](double w) { return w > 0 && w <= kLargestWeight; };
+    require(p.initialContractionWeight == 0 || weight(p.initialContractionWeight), Parameter::InitialContractionWeight,
+            "must be 0 (automatic) or a positive number up to 1e8.");
+    require(weight(p.initialAttractionWeight), Parameter::InitialAttractionWeight, "must be a positive number up to 1e8.");
+    // Beyond a factor of 1000 a single step takes W_L from its start to its limit.
+    require(p.contractionScale >= 1 && p.contractionScale <= 1000, Parameter::ContractionScale,
+            "must be between 1 and 1000.");
+    require(weight(p.maxContractionWeight), Parameter::MaxContractionWeight, "must be a positive number up to 1e8.");
+    require(weight(p.maxAttractionWeight), Parameter::MaxAttractionWeight, "must be a positive number up to 1e8.");
+    require(weight(p.laplacianRowLimit), Parameter::LaplacianRowLimit, "must be a positive number up to 1e8.");
     require(p.maxIterations >= 1, Parameter::MaxIterations, "must be at least 1.");
-    require(p.terminationThreshold >= 0, Parameter::TerminationThreshold, "must be >= 0.");
+    // The extent ratio lies between 0 and 1: a threshold of 1 or more stops after one iteration.
+    require(p.terminationThreshold >= 0 && p.terminationThreshold < 1, Parameter::TerminationThreshold,
+            "must be at least 0 and below 1.");
     checkOutlierParameters(p.outliers);
 }
 
@@ -106,8 +116,16 @@ bool LaplacianContraction::solve(double contractionWeight, PointList& next) {
         system.valuePtr()[normalEquations_->diagonalSlot(int(i))] += w2;
         rhs.row(i) = w2 * positions_[i].transpose();
     }
-    if (!solver_.factorize(system)) return false;
-    const Eigen::MatrixXd solution = solver_.solve(rhs);
+    Eigen::MatrixXd solution;
+    try {
+        if (!solver_.factorize(system)) return false;
+        solution = solver_.solve(rhs);
+    } catch (const std::bad_alloc&) {
+        // Not a numerical failure, and the contraction could not go on: say what ran out.
+        throw InvalidInput("Out of memory: the factorisation of the contraction's " + std::to_string(n) +
+                               " unknowns needs more memory than this process may use.",
+                           {Remedy::lower(Parameter::ContractedPoints)});
+    }
     next.resize(positions_.size());
     for (Eigen::Index i = 0; i < n; ++i) next[i] = solution.row(i).transpose();
     return !diverged(next);

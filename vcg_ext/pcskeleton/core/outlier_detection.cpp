@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 namespace pcskeleton {
 
@@ -21,10 +22,10 @@ constexpr int kLocalPasses = 4;
 }  // namespace
 
 void checkOutlierParameters(const OutlierParameters& p) {
-    if (!(p.isolationFactor >= 1.0))
-        throw InvalidInput(Problem::aboutParameter(Parameter::OutlierIsolation, "must be at least 1 (typical spacings)."));
-    if (!(p.localFactor >= 1.0))
-        throw InvalidInput(Problem::aboutParameter(Parameter::OutlierLocalFactor, "must be at least 1."));
+    if (!(p.isolationFactor >= 1.0 && std::isfinite(p.isolationFactor)))
+        throw InvalidInput(Problem::aboutParameter(Parameter::OutlierIsolation, "must be a finite number of at least 1 (typical spacings)."));
+    if (!(p.localFactor >= 1.0 && std::isfinite(p.localFactor)))
+        throw InvalidInput(Problem::aboutParameter(Parameter::OutlierLocalFactor, "must be a finite number of at least 1."));
     if (!(p.clusterShare >= 0.0 && p.clusterShare < 0.5))
         throw InvalidInput(Problem::aboutParameter(Parameter::OutlierClusterShare, "must be between 0 and 0.5."));
 }

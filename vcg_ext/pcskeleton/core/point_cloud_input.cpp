@@ -4,6 +4,8 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <cstdint>
+#include <cstring>
 #include <numeric>
 #include <sstream>
 
@@ -27,38 +29,18 @@ void rejectNonFinite(const PointList& points, const std::string& what, Remedy re
 
 namespace {
 
-// Sorting indices lexicographically groups exact duplicates; each group keeps the
-// position of its first member.
 void mergeExactDuplicates(const PointList& input, NormalizedCloud& cloud) {
-    std::vector<int> order(input.size());
-    std::iota(order.begin(), order.end(), 0);
-    auto less = [&](int a, int b) {
-        const Point& p = input[a];
-        const Point& q = input[b];
-        if (p.x() != q.x()) return p.x() < q.x();
-        if (p.y() != q.y()) return p.y() < q.y();
-        if (p.z() != q.z()) return p.z() < q.z();
-        return a < b;
-    };
-    std::sort(order.begin(), order.end(), less);
-
-    // Unique points are numbered in input order so that a cloud without duplicates
-    // keeps its order (uniqueIndex is then the identity).
-    std::vector<int> groupLeader(input.size());
-    for (std::size_t s = 0; s < order.size(); ++s) {
-        bool sameAsPrevious = s > 0 && input[order[s]] == input[order[s - 1]];
-        groupLeader[order[s]] = sameAsPrevious ? groupLeader[order[s - 1]] : order[s];
+    const ExactDuplicates duplicates = findExactDuplicates(input);
+    if (!duplicates.any()) {
+        cloud.points = input;
+        cloud.uniqueIndex.resize(input.size());
+        std::iota(cloud.uniqueIndex.begin(), cloud.uniqueIndex.end(), 0);
+        return;
     }
-    cloud.uniqueIndex.assign(input.size(), -1);
     cloud.points.clear();
-    for (std::size_t i = 0; i < input.size(); ++i) {
-        int leader = groupLeader[i];
-        if (cloud.uniqueIndex[leader] < 0) {
-            cloud.uniqueIndex[leader] = static_cast<int>(cloud.points.size());
-            cloud.points.push_back(input[leader]);
-        }
-        cloud.uniqueIndex[i] = cloud.uniqueIndex[leader];
-    }
+    cloud.points.reserve(duplicates.firstOf.size());
+    for (int first : duplicates.firstOf) cloud.points.push_back(input[std::size_t(first)]);
+    cloud.uniqueIndex = duplicates.groupOf;
 }
 
 // Removes the unique points flagged in `outlier` from `cloud.points`, keeping the others in
@@ -99,7 +81,92 @@ void rejectCollinear(const PointList& points) {
     }
 }
 
+// A 64-bit hash of a point's exact coordinates (-0 and +0 alike, as == sees them).
+std::uint64_t exactHash(const Point& p) {
+    std::uint64_t h = 0x9e3779b97f4a7c15ull;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double c = p[axis] == 0.0 ? 0.0 : p[axis];
+        std::uint64_t bits;
+        std::memcpy(&bits, &c, sizeof bits);
+        h ^= bits + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
+        h ^= h >> 31, h *= 0xbf58476d1ce4e5b9ull, h ^= h >> 27;  // splitmix64's mixing
+    }
+    return h;
+}
+
 }  // namespace
+
+// Points are sorted by a hash of their coordinates (not by the coordinates themselves:
+// sorting 10M indices through the points is several times slower); equal points then sit
+// in one run of equal hashes, where they are told apart from collisions exactly. Groups
+// are numbered by their first member, so that a cloud without duplicates keeps its order.
+ExactDuplicates findExactDuplicates(const PointList& points) {
+    const std::size_t n = points.size();
+    std::vector<std::pair<std::uint64_t, int>> keyed(n);
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < long(n); ++i) keyed[std::size_t(i)] = {exactHash(points[std::size_t(i)]), int(i)};
+    std::sort(keyed.begin(), keyed.end());  // by hash, then index: the same on every run
+
+    ExactDuplicates duplicates;
+    std::vector<int> distinctInRun;  // the first member of each distinct point of a run
+    for (std::size_t begin = 0, end = 0; begin < n; begin = end) {
+        end = begin + 1;
+        while (end < n && keyed[end].first == keyed[begin].first) ++end;
+        if (end - begin == 1) continue;
+        distinctInRun.clear();
+        for (std::size_t r = begin; r < end; ++r) {
+            const int i = keyed[r].second;
+            const auto same = std::find_if(distinctInRun.begin(), distinctInRun.end(),
+                                           [&](int first) { return points[std::size_t(first)] == points[std::size_t(i)]; });
+            if (same == distinctInRun.end()) {
+                distinctInRun.push_back(i);
+                continue;
+            }
+            if (!duplicates.any()) {  // the first repeat: every point its own leader so far
+                duplicates.groupOf.resize(n);
+                std::iota(duplicates.groupOf.begin(), duplicates.groupOf.end(), 0);
+            }
+            duplicates.groupOf[std::size_t(i)] = *same;  // members come in index order: *same is the smallest
+        }
+    }
+    if (!duplicates.any()) return duplicates;
+    keyed.clear();
+    keyed.shrink_to_fit();
+    // Leaders come before their group's other members: one pass numbers the groups.
+    std::vector<int>& groupOf = duplicates.groupOf;
+    for (std::size_t i = 0; i < n; ++i) {
+        const int leader = groupOf[i];
+        if (leader == int(i)) {
+            groupOf[i] = int(duplicates.firstOf.size());
+            duplicates.firstOf.push_back(int(i));
+        } else {
+            groupOf[i] = groupOf[std::size_t(leader)];
+        }
+    }
+    return duplicates;
+}
+
+void rejectUnrepresentableScale(const PointList& points, const std::string& what) {
+    // Squared coordinates and squared differences stay between these bounds (with room
+    // for sums of a few thousand of them and for ratios of lengths).
+    constexpr double kLargest = 1e100, kSmallestExtent = 1e-100;
+    const Eigen::AlignedBox3d box = boundingBox(points);
+    if (box.isEmpty()) return;
+    const double largest = std::max(box.min().cwiseAbs().maxCoeff(), box.max().cwiseAbs().maxCoeff());
+    const double extent = box.sizes().maxCoeff();
+    std::ostringstream msg;
+    msg.precision(3);
+    if (largest > kLargest) {
+        msg << "The " << what << " have coordinates up to " << largest << ", beyond the " << kLargest
+            << " within which squared distances can be computed: scale the cloud down.";
+        throw InvalidInput(msg.str());
+    }
+    if (extent > 0 && extent < kSmallestExtent) {
+        msg << "The " << what << " span only " << extent << ", below the " << kSmallestExtent
+            << " down to which squared distances can be told apart: scale the cloud up.";
+        throw InvalidInput(msg.str());
+    }
+}
 
 Eigen::AlignedBox3d boundingBox(const PointList& points) {
     Eigen::AlignedBox3d box;
@@ -111,6 +178,7 @@ NormalizedCloud normalizeCloud(const PointList& input, std::size_t minimumUnique
                                const OutlierParameters& outliers) {
     if (input.empty()) throw InvalidInput("The point layer is empty.");
     rejectNonFinite(input, "points", Remedy::take(Step::RemoveNonFinitePoints));
+    rejectUnrepresentableScale(input, "points");
 
     NormalizedCloud cloud;
     mergeExactDuplicates(input, cloud);

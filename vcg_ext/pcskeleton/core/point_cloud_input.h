@@ -39,6 +39,21 @@ struct NormalizedCloud {
 
 constexpr double kNormalizedLongestSide = 1.6;
 
+// Exact duplicates (scanners and merged scans repeat points bit for bit): every test that
+// counts neighbours must see each position once, or a point repeated k times has only
+// itself as its k neighbours.
+struct ExactDuplicates {
+    std::vector<int> groupOf;  // per point: its group, numbered by first appearance; empty when no point repeats
+    std::vector<int> firstOf;  // per group: its first point; empty when no point repeats
+    bool any() const { return !groupOf.empty(); }
+};
+ExactDuplicates findExactDuplicates(const PointList& points);
+
+// Throws InvalidInput when the cloud's extent or position cannot be worked in: squared
+// distances of its coordinates must be representable as doubles (no overflow to infinity,
+// no underflow to zero).
+void rejectUnrepresentableScale(const PointList& points, const std::string& what);
+
 // The axis-aligned box holding the points (empty for no points).
 Eigen::AlignedBox3d boundingBox(const PointList& points);
 

@@ -6,6 +6,9 @@
 #include <dlfcn.h>
 
 #include <algorithm>
+#include <new>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace pcskeleton {
@@ -47,6 +50,14 @@ private:
     int previous_ = 1;
 };
 
+// CHOLMOD keeps its status in its settings: out of memory (or beyond the size of its
+// integers) as std::bad_alloc, as Eigen's own solver reports it; anything else is a bug.
+void throwIfCholmodFailed(const cholmod_common& settings) {
+    if (settings.status >= CHOLMOD_OK || settings.status == CHOLMOD_NOT_POSDEF) return;
+    if (settings.status == CHOLMOD_OUT_OF_MEMORY || settings.status == CHOLMOD_TOO_LARGE) throw std::bad_alloc();
+    throw std::logic_error("CHOLMOD failed with status " + std::to_string(settings.status));
+}
+
 }  // namespace
 
 struct SparseSpdSolver::Impl {
@@ -54,6 +65,7 @@ struct SparseSpdSolver::Impl {
     Eigen::CholmodSupernodalLLT<Matrix, Eigen::Lower> cholmod;
     Eigen::SimplicialLDLT<Matrix, Eigen::Lower> simplicial;
     std::vector<int> analysedOuter, analysedInner;
+    bool analysed = false;  // CHOLMOD's analysis of the remembered pattern succeeded
 
     bool samePattern(const Matrix& m) const {
         return m.nonZeros() == static_cast<Eigen::Index>(analysedInner.size()) &&
@@ -87,8 +99,16 @@ bool SparseSpdSolver::factorize(const Matrix& m) {
             settings.nmethods = 1;
             settings.method[0].ordering = m.rows() > 50000 ? CHOLMOD_METIS : CHOLMOD_AMD;
             impl_->cholmod.analyzePattern(m);
+            // Eigen reports success even when CHOLMOD could not analyse (out of memory) and
+            // would then factorise with a null factor.
+            impl_->analysed = settings.status >= CHOLMOD_OK;
+            throwIfCholmodFailed(settings);
         }
+        if (!impl_->analysed) throw std::logic_error("SparseSpdSolver: factorising after a failed analysis");
         impl_->cholmod.factorize(m);
+        // Running out of memory half-way leaves a partial factor that Eigen reports as a
+        // numerical failure: it is not one.
+        throwIfCholmodFailed(impl_->cholmod.cholmod());
         return impl_->cholmod.info() == Eigen::Success;
     }
     if (analyse) impl_->simplicial.analyzePattern(m);
@@ -99,8 +119,12 @@ bool SparseSpdSolver::factorize(const Matrix& m) {
 Eigen::MatrixXd SparseSpdSolver::solve(const Eigen::MatrixXd& rhs) const {
     if (impl_->kind == LinearSolver::Cholmod) {
         const OneBlasThread deterministic;
-        return impl_->cholmod.solve(rhs);
+        Eigen::MatrixXd x = impl_->cholmod.solve(rhs);
+        throwIfCholmodFailed(impl_->cholmod.cholmod());
+        if (impl_->cholmod.info() != Eigen::Success) throw std::logic_error("SparseSpdSolver: solving without a factor");
+        return x;
     }
+    if (impl_->simplicial.info() != Eigen::Success) throw std::logic_error("SparseSpdSolver: solving without a factor");
     return impl_->simplicial.solve(rhs);
 }
 

@@ -38,7 +38,8 @@ public:
     SparseSpdSolver& operator=(const SparseSpdSolver&) = delete;
 
     // Factorises `m`, re-analysing its pattern only when it differs from the last one.
-    // Returns false when the matrix is not numerically positive definite.
+    // Returns false when the matrix is not numerically positive definite; throws
+    // std::bad_alloc when memory runs out (CHOLMOD's status included).
     bool factorize(const Matrix& m);
     Eigen::MatrixXd solve(const Eigen::MatrixXd& rhs) const;
 

@@ -24,6 +24,11 @@ constexpr int kPaperResolution = 64;          // the paper's grid: 2^6 cells on 
 constexpr int kDistanceResolution = 64;       // distances to the skeleton are computed exactly up to here
 constexpr double kSkeletonSampleSpacing = 0.25;      // along bones: four samples per paper cell
 constexpr double kMarginShare = 0.05;          // empty space around the data, share of the longest side
+// A skeleton of the points has its nodes inside their box (re-centred nodes of one-sided
+// parts a little outside) and radii well under its diagonal: a node a whole diagonal
+// away, or a radius of a whole diagonal, belongs to something else.
+constexpr double kFarthestNodeDiagonals = 1.0;
+constexpr double kWidestRadiusDiagonals = 1.0;
 // Fewer grid cells holding a point than this and the points do not place a surface: the
 // field would be the skeleton's tubes alone, however "successful" the solve.
 constexpr std::size_t kMinimumOccupiedCells = 32;
@@ -36,6 +41,39 @@ struct Frame {
     Point toFrame(const Point& p) const { return (p - origin) * scale; }
     Point toInput(const Point& p) const { return p / scale + origin; }
 };
+
+// The grid spans the points and every node's ball: a node far from the points, or a radius
+// far larger than they are, makes it so coarse that the points fall into a few cells. Said
+// of the skeleton, which is what is wrong (a stray node, radii of another scale).
+void refuseSkeletonBeyondPoints(const PointList& points, const SkeletonGraph& skeleton) {
+    const Eigen::AlignedBox3d box = boundingBox(points);
+    const double diagonal = box.diagonal().norm();
+    if (!(diagonal > 0)) return;  // the points' own problem, said by the grid's check
+    std::size_t far = 0, wide = 0, firstFar = 0, firstWide = 0;
+    double farthest = 0, widest = 0;
+    for (std::size_t n = 0; n < skeleton.nodeCount(); ++n) {
+        const double away = box.exteriorDistance(skeleton.nodes[n]) / diagonal;
+        const double radius = skeleton.radii[n] / diagonal;
+        if (away > kFarthestNodeDiagonals && far++ == 0) firstFar = n;
+        if (radius > kWidestRadiusDiagonals && wide++ == 0) firstWide = n;
+        farthest = std::max(farthest, away);
+        widest = std::max(widest, radius);
+    }
+    std::ostringstream text;
+    text.precision(3);
+    if (far > 0) {
+        text << far << " of " << skeleton.nodeCount() << " skeleton nodes lie far outside the points (first: node "
+             << firstFar << "; the farthest " << farthest
+             << " bounding-box diagonals of the points away): the skeleton does not describe this point layer.";
+        throw InvalidInput(text.str(), {Remedy::take(Step::DeleteNodes), Remedy::take(Step::ComputeSkeleton)});
+    }
+    if (wide > 0) {
+        text << wide << " of " << skeleton.nodeCount() << " skeleton nodes have a radius larger than the points' "
+             << "bounding-box diagonal (first: node " << firstWide << "; the largest " << widest
+             << " diagonals): the radii are not this point layer's.";
+        throw InvalidInput(text.str(), {Remedy::take(Step::SetNodeRadii), Remedy::take(Step::ComputeSkeleton)});
+    }
+}
 
 void checkInputs(const PointList& points, const SkeletonGraph& skeleton) {
     if (points.empty()) throw InvalidInput("The point layer is empty: reconstruction needs the surface samples.");
@@ -56,6 +94,7 @@ void checkInputs(const PointList& points, const SkeletonGraph& skeleton) {
                            {Remedy::take(Step::SetNodeRadii)});
     const std::string violation = invariantViolation(skeleton);
     if (!violation.empty()) throw InvalidInput("The skeleton is not valid: " + violation);
+    refuseSkeletonBeyondPoints(points, skeleton);
 }
 
 // The number of grid cells holding at least one point: the distinct points as the grid sees them.
@@ -118,13 +157,13 @@ FieldGrid domainGrid(const PointList& points, const SkeletonGraph& skeleton, int
 void refuseGridLargerThanMemory(const FieldGrid& grid) {
     constexpr double kBytesPerNode = 170;
     const double needed = kBytesPerNode * double(grid.size());
-    const double available = physicalMemoryBytes();
-    if (available > 0 && needed > kUsableShareOfMemory * available) {
+    const MemoryAllowance allowance = usableMemory();
+    if (allowance.bytes > 0 && needed > allowance.bytes) {
         std::ostringstream text;
         text.precision(2);
         text << "A grid of " << grid.nodes[0] << " x " << grid.nodes[1] << " x " << grid.nodes[2] << " nodes needs about "
-             << needed / 1e9 << " GB of memory and this machine has " << available / 1e9
-             << " GB: lower the grid resolution.";
+             << needed / 1e9 << " GB of memory, more than the " << allowance.bytes / 1e9 << " GB that "
+             << allowance.limit << " leaves: lower the grid resolution.";
         throw InvalidInput(text.str());
     }
 }
