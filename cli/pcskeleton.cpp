@@ -273,8 +273,11 @@ int parseInteger(const std::string& option, const std::string& text) {
 }
 
 bool samePath(const std::string& a, const std::string& b) {
-    std::error_code ignored;
-    return sameFile(a, b) || std::filesystem::weakly_canonical(a, ignored) == std::filesystem::weakly_canonical(b, ignored);
+    if (sameFile(a, b)) return true;
+    std::error_code first, second;  // a name that cannot be resolved (a symlink loop) names no other file
+    const std::filesystem::path x = std::filesystem::weakly_canonical(a, first);
+    const std::filesystem::path y = std::filesystem::weakly_canonical(b, second);
+    return !first && !second && x == y;
 }
 
 // Before any work: no output may be the input or another output, an existing output is
@@ -299,13 +302,13 @@ void checkOutputs(const Options& options) {
                 throw UsageError(outputs[j].first + " and " + option + " name the same file '" + path + "'");
             }
         }
-        if (std::filesystem::is_directory(path)) throw UsageError(option + " '" + path + "' is a directory");
+        try {
+            checkWritable(path);
+        } catch (const InvalidInput& e) {
+            throw UsageError(option + ": " + e.problem().description);
+        }
         if (fileExists(path) && !options.force) {
             throw UsageError(option + " '" + path + "' exists already; choose another name or add --force to replace it");
-        }
-        const std::filesystem::path folder = std::filesystem::path(path).parent_path();
-        if (!folder.empty() && !std::filesystem::is_directory(folder)) {
-            throw UsageError(option + " '" + path + "': the folder '" + folder.string() + "' does not exist");
         }
     }
 }
@@ -442,6 +445,8 @@ int main(int argc, char** argv) {
         return 2;
     }
     try {
+        // A reconstruction parameter the library would refuse is refused before the skeleton's work.
+        if (!options.surface.empty()) checkReconstructionParameters(options.reconstruction);
         const PointList points = readPointCloud(options.input);
         ProgressCallback progress;
         const bool showProgress = !options.quiet && isatty(fileno(stderr));
@@ -450,14 +455,21 @@ int main(int argc, char** argv) {
         }
         std::string report;
         SkeletonGraph skeleton;
+        // Every output is computed before any is written, so that a failure leaves none.
+        std::vector<std::pair<std::string, std::function<void()>>> writes;
+        SkeletonResult result;
         if (!options.skeleton.empty()) {
             skeleton = readSkeleton(options.skeleton);
         } else {
-            SkeletonResult result = computeCurveSkeleton(points, options.parameters, progress);
+            result = computeCurveSkeleton(points, options.parameters, progress);
             if (showProgress) std::fprintf(stderr, "\r%-46s\r", "");
-            writeSkeleton(result.skeleton, options.output);
-            if (!options.contracted.empty()) writePointCloud(result.contraction.contracted, options.contracted);
-            if (!options.correspondence.empty()) writeCorrespondence(result.skeleton, options.correspondence);
+            writes.emplace_back(options.output, [&] { writeSkeleton(result.skeleton, options.output); });
+            if (!options.contracted.empty()) {
+                writes.emplace_back(options.contracted, [&] { writePointCloud(result.contraction.contracted, options.contracted); });
+            }
+            if (!options.correspondence.empty()) {
+                writes.emplace_back(options.correspondence, [&] { writeCorrespondence(result.skeleton, options.correspondence); });
+            }
             report = describe(result.quality, commandLineTerms());
             if (!options.quiet) {
                 const StageSeconds& s = result.seconds;
@@ -469,12 +481,13 @@ int main(int argc, char** argv) {
                              result.contraction.iterations.size(), describe(result.contraction.stopReason).c_str(),
                              s.subsampling, s.neighbourhoods, s.contraction, s.thinning, s.embedding, s.finishing, report.c_str());
             }
-            skeleton = std::move(result.skeleton);
         }
+        const SkeletonGraph& reconstructed = options.skeleton.empty() ? result.skeleton : skeleton;
+        Reconstruction surface;
         if (!options.surface.empty()) {
-            const Reconstruction surface = reconstructFromSkeleton(points, skeleton, options.reconstruction, progress);
+            surface = reconstructFromSkeleton(points, reconstructed, options.reconstruction, progress);
             if (showProgress) std::fprintf(stderr, "\r%-46s\r", "");
-            writeTriangleMesh(surface.mesh, options.surface);
+            writes.emplace_back(options.surface, [&] { writeTriangleMesh(surface.mesh, options.surface); });
             const std::string surfaceReport = describe(surface.report, commandLineTerms());
             if (!options.quiet) {
                 std::fprintf(stderr, "pcskeleton: surface %s: %zu vertices, %zu triangles\n%s\n",
@@ -483,7 +496,21 @@ int main(int argc, char** argv) {
             }
             report += (report.empty() ? "" : "\n") + surfaceReport;
         }
-        if (!options.report.empty()) writeText(options.report, [&](std::ostream& out) { out << report << '\n'; });
+        if (!options.report.empty()) {
+            writes.emplace_back(options.report, [&] { writeText(options.report, [&](std::ostream& out) { out << report << '\n'; }); });
+        }
+        std::vector<std::string> written;
+        try {
+            for (const auto& [path, write] : writes) {
+                write();
+                written.push_back(path);
+            }
+        } catch (const InvalidInput& e) {
+            if (written.empty()) throw;
+            std::string names;
+            for (const std::string& path : written) names += (names.empty() ? "'" : ", '") + path + "'";
+            throw InvalidInput(e.problem().description + " Written before it: " + names + ".");
+        }
         return 0;
     } catch (const InvalidInput& e) {
         std::fprintf(stderr, "pcskeleton: %s\n", describe(e.problem(), commandLineTerms()).c_str());

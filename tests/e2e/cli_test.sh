@@ -193,7 +193,7 @@ expect_error 2 "expects a number" $M/knot.off -o out.ply --radius big
 expect_error 2 "contracted-points 2147483648 is out of range" $M/knot.off -o out.ply --contracted-points 2147483648
 expect_error 2 "unknown option" $M/knot.off -o out.ply --fast
 expect_error 1 "^pcskeleton: --radius must be a fraction" $M/knot.off -o out.ply --radius 2
-expect_error 1 "^pcskeleton: --sl must be at least 1" $M/knot.off -o out.ply --sl 0.5
+expect_error 1 "^pcskeleton: --sl must be between 1 and 1000" $M/knot.off -o out.ply --sl 0.5
 expect_error 1 "^pcskeleton: --denoise must be between 0 (off) and 10, or -1" $M/knot.off -o out.ply --denoise 11
 expect_error 1 "^pcskeleton: --link-limit must be 0 (every link connects" $M/knot.off -o out.ply --link-limit -1
 expect_error 1 "^pcskeleton: --gap-limit must be 0 (no bridge" $M/knot.off -o out.ply --gap-limit -1
@@ -309,5 +309,70 @@ waits=$(env -u OMP_WAIT_POLICY -u GOMP_SPINCOUNT OMP_DISPLAY_ENV=verbose "$PCSKE
 waits=$(env OMP_WAIT_POLICY=active OMP_DISPLAY_ENV=true "$PCSKELETON" --help 2>&1 >/dev/null)
 [ "$(echo "$waits" | grep -c "OPENMP DISPLAY ENVIRONMENT BEGIN")" = 1 ] && echo "$waits" | grep -q "OMP_WAIT_POLICY = 'ACTIVE'" \
   || { echo "$waits"; fail "the user's OMP_WAIT_POLICY=active was overridden or the tool restarted"; }
+
+# Hardening (an outside probe's findings): each once crashed, aborted or misread.
+/usr/bin/python3 - <<'PY'
+import numpy as np
+rng = np.random.default_rng(5); u, v = rng.random((2, 1000)) * 2 * np.pi
+torus = np.c_[(1 + 0.3 * np.cos(v)) * np.cos(u), (1 + 0.3 * np.cos(v)) * np.sin(u), 0.3 * np.sin(v)]
+np.savetxt("copies16.xyz", np.tile(torus, (16, 1)), fmt="%.6f")      # every point 16 times
+np.savetxt("huge.xyz", torus * 1e154, fmt="%.6e")
+rng = np.random.default_rng(6); u, v = rng.random((2, 200000)) * 2 * np.pi
+np.savetxt("torus200k.xyz", np.c_[(1 + 0.3 * np.cos(v)) * np.cos(u), (1 + 0.3 * np.cos(v)) * np.sin(u), 0.3 * np.sin(v)], fmt="%.6f")
+PY
+# Exact duplicates are one point each, not a layer of isolated clumps.
+"$PCSKELETON" copies16.xyz -o copies16.ply 2>copies16.log || { cat copies16.log; fail "16 copies of each point were refused"; }
+$GRAPH check copies16.ply --cycles 1 --components 1
+# The memory check respects the process's own limit; a factorisation that runs out of
+# memory is an error, never a crash nor a "numerical failure".
+set +e; (ulimit -v 400000; exec "$PCSKELETON" torus200k.xyz -o oom.ply --full-resolution) 2>oom.log; code=$?; set -e
+[ "$code" = 1 ] && grep -q "address-space limit (ulimit -v)" oom.log || { cat oom.log; fail "under ulimit -v: exit $code"; }
+[ ! -e oom.ply ] || fail "a run out of memory wrote oom.ply"
+# Output paths that cannot be written are refused before any work, for every output.
+long="$(printf 'n%.0s' $(seq 300)).ply"
+ln -s loop.ply loop.ply  # a symlink loop
+for option in -o --contracted --correspondence --report --surface; do
+  case "$option" in -o) rest=() ;; *) rest=(-o fine.ply) ;; esac
+  for target in "$long" loop.ply loop.ply/x.ply /proc/x.ply; do
+    expect_error 2 "^pcskeleton: $option: Cannot write" $M/knot.off "${rest[@]}" "$option" "$target"
+  done
+done
+expect_error 2 "bytes long, longer than the 255 its folder allows" $M/knot.off -o "$long"
+expect_error 2 "Too many levels of symbolic links" $M/knot.off -o loop.ply/x.ply
+# A folder the user may not enter, as another user (root enters every folder).
+if [ "$(id -u)" = 0 ]; then AS_NOBODY=(setpriv --reuid=65534 --regid=65534 --clear-groups); else AS_NOBODY=(); fi
+shared="$(mktemp -d /tmp/pcskeleton_cli_XXXXXX)"; chmod 755 "$shared"; mkdir "$shared/locked"; chmod 000 "$shared/locked"
+if [ "$(id -u)" != 0 ] || "${AS_NOBODY[@]}" true 2>/dev/null; then
+  set +e; "${AS_NOBODY[@]}" "$PCSKELETON" "$WORK/$M/knot.off" -o "$shared/locked/x.ply" 2>locked.log; code=$?; set -e
+  [ "$code" = 2 ] && grep -q "Permission denied" locked.log || { cat locked.log; fail "a locked folder: exit $code"; }
+fi
+rm -rf "$shared"
+ls | grep -q partial && fail "a path check left a temporary behind: $(ls | grep partial)"
+# Silent misreads: records longer than the header says, decimal commas.
+printf 'ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 0 0 0 0 1\n1 0 0 0 0 1\n' > shifted.ply
+expect_error 1 "line 8): the line holds more values than the header declares" shifted.ply -o s.ply
+printf '1,5 2,5 3,5\n' > commas.xyz
+expect_error 1 "line 1: the numbers are not all separated alike" commas.xyz -o s.ply
+# Numbers at the edges, by name.
+expect_error 1 "^pcskeleton: --wl must be 0 (automatic) or a positive number up to 1e8" $M/knot.off -o s.ply --wl inf
+expect_error 1 "^pcskeleton: --sl must be between 1 and 1000" $M/knot.off -o s.ply --sl 1e308
+expect_error 1 "^pcskeleton: --threshold must be at least 0 and below 1" $M/knot.off -o s.ply --threshold inf
+expect_error 1 "coordinates up to 1.3e+154, beyond the 1e+100" huge.xyz -o s.ply
+# A stray skeleton node is the skeleton's problem, not the points'.
+{ echo "v 1000 0 0 0.3"; for a in 0 60 120 180 240 300; do
+    /usr/bin/python3 -c "import math; print('v %f %f 0 0.3' % (math.cos(math.radians($a)), math.sin(math.radians($a))))"; done
+  echo "l 2 3 4 5 6 7 2"; echo "l 1 2"; } > stray.obj
+expect_error 1 "1 of 7 skeleton nodes lie far outside the points (first: node 0" torus.ply --skeleton stray.obj --surface s.off
+[ ! -e s.ply ] || fail "a refused run wrote s.ply"
+# Outputs are written only once all are computed: a surface refused after the skeleton
+# leaves no skeleton file.
+set +e; (ulimit -v 1500000; exec "$PCSKELETON" torus.ply -o left.ply --surface left.off --resolution 512) 2>left.log; code=$?; set -e
+[ "$code" = 1 ] && grep -q "lower the grid resolution" left.log || { cat left.log; fail "the huge grid: exit $code"; }
+[ ! -e left.ply ] && [ ! -e left.off ] || fail "a failed run left $(ls left.* | tr '\n' ' ')"
+# The temporaries of a killed run are removed by the next write to the same file.
+sleep 0 & dead=$!; wait $dead
+echo partial > "knot.ply.partial-$dead-AbCd12"
+"$PCSKELETON" $M/knot.off -o knot.ply --force --quiet
+[ ! -e "knot.ply.partial-$dead-AbCd12" ] || fail "a killed run's temporary was not removed"
 
 echo "pcskeleton command line: OK"
