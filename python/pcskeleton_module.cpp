@@ -19,9 +19,13 @@
 #include <cmath>
 #include <cstring>
 #include <functional>
+#include <limits>
 #include <map>
 #include <memory>
+#include <mutex>
+#include <sstream>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 namespace py = pybind11;
@@ -30,7 +34,6 @@ using namespace pcskeleton;
 namespace {
 
 using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
-using IntArray = py::array_t<int, py::array::c_style | py::array::forcecast>;
 
 // ---- Words: the library's advice names this module's keywords -------------------------
 
@@ -259,15 +262,56 @@ PointList pointsFrom(const DoubleArray& array, const char* what) {
     return points;
 }
 
+// Indices from any array-like: integers of any width, or floats holding whole numbers,
+// each within int's range. (numpy's cast to int would wrap 2^32 + 1 to 1 and cut 1.9 to 1.)
+// Returns the values in C order and the array's shape in `shape`.
+std::vector<int> indicesFrom(const py::object& object, const char* what, std::vector<py::ssize_t>& shape) {
+    const py::array array = py::array::ensure(object);
+    if (!array) throw InvalidInput(std::string(what) + " must be an array of integers.");
+    shape.assign(array.shape(), array.shape() + array.ndim());
+    std::vector<int> indices(std::size_t(array.size()));
+    const auto refuse = [&](auto value, const char* why) {
+        std::ostringstream text;
+        text.precision(17);
+        text << what << ": " << value << " is not a valid index (" << why << ").";
+        throw InvalidInput(text.str());
+    };
+    const auto take = [&](auto typed) {
+        const auto* values = typed.data();
+        for (std::size_t i = 0; i < indices.size(); ++i) {
+            const auto value = values[i];
+            using Value = std::decay_t<decltype(value)>;
+            if constexpr (std::is_floating_point_v<Value>) {
+                if (!(value == std::floor(value))) refuse(value, "not a whole number");
+            }
+            bool inRange = value <= Value(std::numeric_limits<int>::max());
+            if constexpr (std::is_signed_v<Value>) inRange = inRange && value >= Value(std::numeric_limits<int>::min());
+            if (!inRange) refuse(value, "out of range");
+            indices[i] = int(value);
+        }
+    };
+    constexpr auto flags = py::array::c_style | py::array::forcecast;
+    switch (array.dtype().kind()) {
+        case 'i': take(py::array_t<long long, flags>::ensure(array)); break;
+        case 'u': take(py::array_t<unsigned long long, flags>::ensure(array)); break;
+        case 'f': take(py::array_t<double, flags>::ensure(array)); break;
+        default:
+            if (array.size() > 0) throw InvalidInput(std::string(what) + " must be an array of integers.");
+    }
+    return indices;
+}
+
 // Rows of `columns` indices, e.g. edges (e, 2) or faces (f, 3); an empty array is no rows.
 template <std::size_t columns>
-std::vector<std::array<int, columns>> indexRowsFrom(const IntArray& array, const char* what) {
+std::vector<std::array<int, columns>> indexRowsFrom(const py::object& object, const char* what) {
+    std::vector<py::ssize_t> shape;
+    const std::vector<int> indices = indicesFrom(object, what, shape);
     std::vector<std::array<int, columns>> rows;
-    if (array.size() == 0) return rows;
-    if (array.ndim() != 2 || array.shape(1) != py::ssize_t(columns))
+    if (indices.empty()) return rows;
+    if (shape.size() != 2 || shape[1] != py::ssize_t(columns))
         throw InvalidInput(std::string(what) + " must be an array of shape (n, " + std::to_string(columns) + ").");
-    rows.resize(std::size_t(array.shape(0)));
-    std::memcpy(rows.data()->data(), array.data(), rows.size() * columns * sizeof(int));
+    rows.resize(std::size_t(shape[0]));
+    std::memcpy(rows.data()->data(), indices.data(), indices.size() * sizeof(int));
     return rows;
 }
 
@@ -443,7 +487,7 @@ PySkeleton skeletonFrom(SkeletonResult result) {
 
 // A skeleton built from arrays (a user's own, or one changed in numpy) must satisfy the
 // graph's invariants (invariantViolation), as the editor requires.
-SkeletonGraph graphFromArrays(const DoubleArray& nodes, const IntArray& edges, const py::object& radii,
+SkeletonGraph graphFromArrays(const DoubleArray& nodes, const py::object& edges, const py::object& radii,
                               const py::object& correspondence) {
     SkeletonGraph g;
     g.nodes = pointsFrom(nodes, "nodes");
@@ -453,8 +497,8 @@ SkeletonGraph graphFromArrays(const DoubleArray& nodes, const IntArray& edges, c
         g.radii.assign(r.data(), r.data() + r.size());
     }
     if (!correspondence.is_none()) {
-        const IntArray c = correspondence.cast<IntArray>();
-        g.pointNode.assign(c.data(), c.data() + c.size());
+        std::vector<py::ssize_t> shape;
+        g.pointNode = indicesFrom(correspondence, "correspondence", shape);
     }
     // Without radii the graph is checked first (with stand-in radii), then its radii are
     // estimated from the bones, as MeshLab's filters and Edit Skeleton do (fillMissingRadii).
@@ -473,6 +517,17 @@ SkeletonGraph graphFromArrays(const DoubleArray& nodes, const IntArray& edges, c
 // ---- The step API: a contraction to watch, then its skeleton ----------------------------
 
 class PyContraction {
+    mutable std::mutex mutex_;
+    // Threads sharing one contraction take turns: the lock is taken without the GIL, so
+    // that a call waiting for it never blocks the one holding it (whose progress callback
+    // needs the GIL).
+    template <class Work>
+    auto exclusively(Work work) const {
+        const py::gil_scoped_release released;
+        const std::lock_guard<std::mutex> lock(mutex_);
+        return work();
+    }
+
 public:
     PyContraction(const DoubleArray& points, const py::dict& kwargs, const py::object& progress)
         : points_(pointsFrom(points, "points")), settings_(settingsFrom(kwargs, skeletonKeywords(), "Contraction")) {
@@ -488,10 +543,7 @@ public:
     }
 
     py::dict iterate() {
-        const IterationReport r = [&] {
-            py::gil_scoped_release released;
-            return contraction_->iterate();
-        }();
+        const IterationReport r = exclusively([&] { return contraction_->iterate(); });
         py::dict d;
         d["iteration"] = r.iteration;
         d["extent_ratio"] = r.extentRatio;
@@ -499,13 +551,22 @@ public:
         d["seconds"] = r.seconds;
         return d;
     }
-    bool finished() const { return contraction_->finished(); }
-    const char* stopReason() const { return stopReasonName(contraction_->stopReason()); }
-    py::array contracted() const { return arrayOwning(contraction_->contractedPoints()); }
-    py::array workingPoints() const { return arrayOwning(work_->points()); }
+    bool finished() const {
+        return exclusively([&] { return contraction_->finished(); });
+    }
+    const char* stopReason() const {
+        return stopReasonName(exclusively([&] { return contraction_->stopReason(); }));
+    }
+    py::array contracted() const {
+        return arrayOwning(exclusively([&] { return contraction_->contractedPoints(); }));
+    }
+    py::array workingPoints() const {
+        return arrayOwning(exclusively([&] { return work_->points(); }));
+    }
 
     PySkeleton skeleton(const py::object& progress) const {
         return skeletonFrom(withoutGil(progress, [&](const ProgressCallback& callback) {
+            const std::lock_guard<std::mutex> lock(mutex_);
             SkeletonResult result = skeletonFromContraction(*contraction_, settings_.skeleton.thinning, callback);
             work_->carryToAllPoints(result);
             return result;
@@ -542,7 +603,7 @@ PYBIND11_MODULE(_pcskeleton, m) {
     m.def("reconstruction_defaults", [] { return defaultsOf(reconstructionKeywords()); });
 
     py::class_<PySkeleton>(m, "Skeleton")
-        .def(py::init([](const DoubleArray& nodes, const IntArray& edges, const py::object& radii,
+        .def(py::init([](const DoubleArray& nodes, const py::object& edges, const py::object& radii,
                          const py::object& correspondence) {
                  PySkeleton s;
                  s.graph = graphFromArrays(nodes, edges, radii, correspondence);
@@ -617,7 +678,7 @@ PYBIND11_MODULE(_pcskeleton, m) {
     m.def("write_points", [](const DoubleArray& points, const std::string& path) {
         writePointCloud(pointsFrom(points, "points"), path);
     }, py::arg("points"), py::arg("path"));
-    m.def("write_mesh", [](const DoubleArray& vertices, const IntArray& faces, const std::string& path) {
+    m.def("write_mesh", [](const DoubleArray& vertices, const py::object& faces, const std::string& path) {
         TriangleMesh mesh;
         mesh.vertices = pointsFrom(vertices, "vertices");
         mesh.triangles = indexRowsFrom<3>(faces, "faces");
