@@ -22,9 +22,9 @@ NODES="$PY $HERE/find_nodes.py"
 source "$HERE/gui_lib.sh"
 # Screen position of the ring node at `angle` degrees, from the last screenshot.
 node_at() { $NODES "$SHOT" position "$1"; }
-expect_nodes() {  # yellow, red
-  local counts; counts="$($NODES "$SHOT" count)"
-  [ "$counts" = "$1 $2" ] || fail "expected $1 unselected and $2 selected nodes on screen, saw $counts"
+nodes_on_screen() { SEEN="$($NODES "$SHOT" count)"; [ "$SEEN" = "$1 $2" ]; }
+expect_nodes() {  # yellow, red, screenshot name
+  wait_screen 20 "$3" "expected $1 unselected and $2 selected nodes on screen" nodes_on_screen "$1" "$2"
 }
 
 # Where things are in a 1280x900 MeshLab window at the top left, read off screenshots of
@@ -42,35 +42,28 @@ $PY "$HERE/make_ring.py" 0.25 --torus  # a torus cloud and its centre circle, 12
 MESHLAB_PID=$!
 trap 'kill $MESHLAB_PID 2>/dev/null || true' EXIT
 wait_window "MeshLab 20" 30
-sleep 2
 WINDOW="$(xdotool search --onlyvisible --name "MeshLab 20" | head -1)"
-xdotool windowmove "$WINDOW" 0 0 windowsize "$WINDOW" 1280 900
-sleep 1
+place_window "$WINDOW" 1280 900
 
 click 74 10            # Edit
 shot edit-menu
 # Edit Skeleton (the ring is the current layer): the menu's last entry, as edit plugins are
 # listed by file name; 2020.09 has it higher up.
 if [[ "$VERSION" == 2020.* ]]; then click 128 434 2; else xdotool key Up Return; sleep 2; fi
-shot tool-started
-expect_nodes 12 0
+expect_nodes 12 0 tool-started
 
 read -r x y <<<"$(node_at 0)"
 click "$x" "$y"
-shot node-selected
-expect_nodes 11 1
-xdotool key Delete; sleep 0.8
-shot node-deleted
-expect_nodes 11 0
+expect_nodes 11 1 node-selected
+xdotool key Delete
+expect_nodes 11 0 node-deleted
 
 read -r x y <<<"$(node_at 90)"; click "$x" "$y" 0.5
 read -r x y <<<"$(node_at 120)"
-xdotool keydown shift mousemove "$x" "$y" click 1 keyup shift; sleep 0.8
-shot two-selected
-expect_nodes 9 2
-xdotool key m; sleep 0.8
-shot merged
-expect_nodes 9 1
+xdotool keydown shift mousemove "$x" "$y" click 1 keyup shift
+expect_nodes 9 2 two-selected
+xdotool key m
+expect_nodes 9 1 merged
 
 drag() {  # from x y, by dx dy pixels, in steps as a hand would
   xdotool mousemove "$1" "$2" mousedown 1
@@ -84,22 +77,26 @@ shot moved-down
 xdotool key ctrl+z; sleep 0.8                               # undo the second move only
 shot undone
 xdotool key plus; sleep 0.8                                 # the -y node, still selected: radius x 1.1
-xdotool key r; sleep 0.8
-shot radius-field
+xdotool key r
+wait_screen_still radius-field 20  # the view before the reconstruction, fully drawn
 BEFORE="$SHOT"
 
-# Reconstruct from skeleton (the panel's button): a surface layer appears in the view.
-click "${RECONSTRUCT_BUTTON[@]}" 10
-shot reconstructed
-$PY - "$BEFORE" "$SHOT" <<'PY' || fail "no reconstructed surface appeared in the view"
+# Reconstruct from skeleton (the panel's button): a surface layer appears in the view,
+# once the reconstruction is done and drawn (polled: it takes seconds, more on a busy machine).
+surface_in_view() {
+  SEEN="$($PY - "$BEFORE" "$SHOT" <<'PY'
 import sys
 from PIL import Image, ImageChops
 before, after = (Image.open(p).convert("RGB").crop((0, 75, 860, 775)) for p in sys.argv[1:3])
 changed = sum(1 for value in ImageChops.difference(before, after).convert("L").getdata() if value > 40)
 share = changed / (860 * 700)
-print(f"view pixels changed by the reconstruction: {share:.1%}")
-assert share > 0.05
+print(f"{share:.1%} of the view's pixels changed")
+sys.exit(0 if share > 0.05 else 1)
 PY
+)"
+}
+click "${RECONSTRUCT_BUTTON[@]}" 0
+wait_screen 120 reconstructed "no reconstructed surface appeared in the view" surface_in_view
 
 # Save the layer: Filters > Point Set > Export Skeleton, with its default file name.
 click "${FILTERS[@]}"; click "${POINT_SET[@]}"; click "${EXPORT_ITEM[@]}" 1.5
@@ -114,7 +111,7 @@ else  # the dialog's bottom row: Close at a quarter of its width, Apply at three
   click $((X + WIDTH / 4)) $((Y + HEIGHT - 21))
 fi
 SAVED="$WORK/ring_1.ply"  # the default never replaces the file the skeleton came from
-[ -s "$SAVED" ] || fail "the edited skeleton was not saved to $SAVED"
+wait_file "$SAVED" 20 "the edited skeleton was not saved to $SAVED"
 cmp -s "$SAVED" ring.ply && fail "the saved skeleton is the original"
 
 $PY "$HERE/skeleton_graph.py" check "$SAVED" --cycles 0 --tips 2 --components 1

@@ -1,13 +1,67 @@
-# Shared by the GUI tests (sourced): screenshots, failing with one, waiting for windows,
-# clicking. Expects WORK (the screenshot folder) to be set.
+# Shared by the GUI tests (sourced): screenshots, failing with one, and waiting for the
+# state a test checks (a window, the window's place, a file, what the screen shows) by
+# polling it until a timeout, never by a fixed delay and a guess. Expects WORK (the
+# screenshot folder) to be set.
 step=0
 shot() { step=$((step + 1)); SHOT="$WORK/$(printf '%02d' $step)-$1.png"; import -window root "$SHOT"; }
 fail() { shot failure; echo "FAIL: $*"; echo "screenshots: $WORK"; exit 1; }
-wait_window() {  # name, seconds
-  local deadline=$((SECONDS + $2))
-  until xdotool search --onlyvisible --name "$1" >/dev/null 2>&1; do
-    [ $SECONDS -lt $deadline ] || fail "no window named '$1' after $2 s"
+
+# Runs the command every 0.3 s until it succeeds; fails with the description after SECONDS
+# (and with SEEN, which a check may set to what it saw last).
+wait_until() {  # seconds, description, command...
+  local seconds="$1" what="$2"; shift 2
+  local deadline=$((SECONDS + seconds))
+  SEEN=""
+  until "$@"; do
+    [ $SECONDS -lt $deadline ] || fail "$what (after waiting $seconds s${SEEN:+; last seen: $SEEN})"
     sleep 0.3
   done
+}
+window_shown() { xdotool search --onlyvisible --name "$1" >/dev/null 2>&1; }
+wait_window() {  # name, seconds
+  wait_until "$2" "no window named '$1'" window_shown "$1"
+}
+# Takes a screenshot named NAME and runs the check on it ($SHOT), until the check passes.
+wait_screen() {  # seconds, name, description, check command...
+  local seconds="$1" name="$2" what="$3"; shift 3
+  screen_shows() { shot "$name"; "$@"; }
+  wait_until "$seconds" "$what" screen_shows "$@"
+}
+# The screen has finished drawing once two screenshots in a row have the same pixels.
+screen_still() {
+  local previous="${SHOT:-}"
+  shot "$1"
+  [ -n "$previous" ] && /usr/bin/python3 -c "
+import sys
+from PIL import Image, ImageChops
+a, b = (Image.open(p).convert('RGB') for p in sys.argv[1:3])
+sys.exit(0 if a.size == b.size and ImageChops.difference(a, b).getbbox() is None else 1)" "$previous" "$SHOT"
+}
+wait_screen_still() {  # name, seconds
+  wait_until "$2" "the screen kept changing" screen_still "$1"
+}
+# A file is complete once it exists and its size stays the same over two polls (MeshLab's
+# own writers write in place).
+file_written() {
+  local size; size="$(stat -c %s "$1" 2>/dev/null || echo 0)"
+  [ "$size" -gt 0 ] && [ "$size" = "${LAST_SIZE:-}" ] && return 0
+  LAST_SIZE="$size"; return 1
+}
+wait_file() {  # path, seconds, description
+  LAST_SIZE=""
+  wait_until "$2" "$3" file_written "$1"
+}
+# Moves and sizes the window until it stays where asked (MeshLab sets its own geometry
+# once after it shows).
+window_placed() {  # window, width, height
+  xdotool windowmove "$1" 0 0 windowsize "$1" "$2" "$3"
+  local X Y WIDTH HEIGHT SCREEN WINDOW
+  eval "$(xdotool getwindowgeometry --shell "$1" | tr -d ' ')"
+  if [ "$X $Y $WIDTH $HEIGHT" = "0 0 $2 $3" ]; then PLACED_POLLS=$((PLACED_POLLS + 1)); else PLACED_POLLS=0; fi
+  [ "$PLACED_POLLS" -ge 4 ]
+}
+place_window() {  # window, width, height
+  PLACED_POLLS=0
+  wait_until 30 "the window did not stay at 0,0 with size $2x$3" window_placed "$@"
 }
 click() { xdotool mousemove "$1" "$2" click 1; sleep "${3:-0.8}"; }

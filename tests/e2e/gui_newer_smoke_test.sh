@@ -33,11 +33,9 @@ source "$HERE/gui_lib.sh"
 MESHLAB_PID=$!
 trap 'kill $MESHLAB_PID 2>/dev/null || true' EXIT
 wait_window "MeshLab $VERSION" 30
-sleep 2
 WINDOW="$(xdotool search --onlyvisible --name "MeshLab $VERSION" | head -1)"
-xdotool windowmove "$WINDOW" 0 0 windowsize "$WINDOW" 1280 1000
-sleep 1
-shot opened
+place_window "$WINDOW" 1280 1000
+wait_screen_still opened 30
 # Any other window now would be an error box (e.g. "Error while loading plugins").
 others="$(xdotool search --onlyvisible --name '.' getwindowname %@ 2>/dev/null | grep -v "^MeshLab $VERSION" || true)"
 [ -z "$others" ] || fail "MeshLab opened with another window: $others"
@@ -56,9 +54,12 @@ click $((X + WIDTH / 4)) $((Y + HEIGHT - 21))         # Close
 
 click "${EDIT_MENU[@]}"
 shot edit-menu
-xdotool key Up Return; sleep 2   # the last entry: Edit Skeleton (plugins are listed by file name)
-shot edit-skeleton
-read -r yellow red <<<"$(/usr/bin/python3 "$HERE/find_nodes.py" "$SHOT" count)"
-[ "$yellow" -ge 20 ] && [ "$red" -eq 0 ] \
-  || fail "the Edit Skeleton tool shows $yellow nodes ($red selected): expected the elephant's skeleton (20 or more)"
+xdotool key Up Return   # the last entry: Edit Skeleton (plugins are listed by file name)
+skeleton_on_screen() {
+  read -r yellow red <<<"$(/usr/bin/python3 "$HERE/find_nodes.py" "$SHOT" count)"
+  SEEN="$yellow nodes, $red selected"
+  [ "$yellow" -ge 20 ] && [ "$red" -eq 0 ]
+}
+wait_screen 30 edit-skeleton "the Edit Skeleton tool does not show the elephant's skeleton (20 or more nodes, none selected)" \
+  skeleton_on_screen
 echo "GUI smoke test, MeshLab $VERSION: OK ($yellow nodes on screen; screenshots in $WORK)"

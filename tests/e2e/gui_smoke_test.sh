@@ -25,8 +25,7 @@ source "$HERE/gui_lib.sh"
 MESHLAB_PID=$!
 trap 'kill $MESHLAB_PID 2>/dev/null || true' EXIT
 wait_window "MeshLab 20" 30
-sleep 2
-shot opened
+wait_screen_still opened 30
 
 click 120 10          # Filters
 click 160 386         # Point Set
@@ -50,8 +49,8 @@ xdotool key Return
 wait_window "Choose Saving Options" 10
 shot saving-options
 click 39 279          # untick "Binary encoding"
-click 549 378 1.5     # OK
-[ -s "$WORK/gui_contracted.ply" ] || fail "the exported layer was not written"
+click 549 378 0       # OK
+wait_file "$WORK/gui_contracted.ply" 30 "the exported layer was not written"
 
 # The same filter through meshlabserver gives the reference for the GUI's result.
 xvfb-run -a "$PREFIX/bin/meshlabserver" -i "$INPUT" -o "$WORK/input.ply" -l 0 -m sa \
@@ -88,7 +87,7 @@ shot export-dialog
 click 216 293 2       # Apply: the default file is next to the input, named after the layer
 click 76 293          # Close
 GUI_SKELETON="$WORK/data/meshes/elephant_skeleton.ply"
-[ -s "$GUI_SKELETON" ] || fail "Export Skeleton did not write $GUI_SKELETON"
+wait_file "$GUI_SKELETON" 30 "Export Skeleton did not write $GUI_SKELETON"
 shot skeleton-exported
 
 # meshlabserver's run of the shipped pipeline script gives the same graph, written next to
