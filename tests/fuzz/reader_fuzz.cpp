@@ -7,7 +7,8 @@
 //   reader_fuzz CORPUS_DIR WORK_DIR [--mutations N] [--seed S] [--isolate] [--locale NAME]
 //
 // Beyond crashes, oracles for misreads: a decimal comma in a line of coordinates, or an
-// ascii PLY vertex line with a value more or fewer than its header, must be refused.
+// ascii PLY vertex line with a value more or fewer than its header, must be refused. Then
+// as many output paths as mutations are written or refused, never leaving a file behind.
 //
 // The test suite runs a few thousand executions; developers run millions the same way
 // (see the README). The input being read is always WORK_DIR/current.<ext>: after a crash
@@ -15,6 +16,7 @@
 // every read runs in a child process, so that a crash is counted (and its input kept as
 // WORK_DIR/crash-N.<ext>) and the run goes on: slower, for long runs and old readers.
 #include <pcskeleton/io/point_cloud_io.h>
+#include <pcskeleton/io/input_file.h>
 #include <pcskeleton/io/skeleton_io.h>
 
 #include <sys/wait.h>
@@ -252,6 +254,68 @@ void checkMisreadOracles(const Bytes& original, const std::string& ext, const st
     }
 }
 
+// Output paths put together from awkward pieces (names too long, symbolic-link loops,
+// missing or unwritable folders, a directory, "..", blanks and newlines) are written
+// through every writer or refused with InvalidInput; a refused write leaves nothing
+// behind, an accepted one the whole file and no temporary.
+void fuzzOutputPaths(const fs::path& work, Mutator& mutator, long paths, Tally& tally) {
+    const fs::path root = work / "paths";
+    fs::remove_all(root);
+    fs::create_directories(root / "folder");
+    fs::create_symlink("loop", root / "loop");
+    fs::create_symlink("folder", root / "link");
+    const std::vector<std::string> folders = {"", "folder/", "link/", "loop/", "missing/", "folder/../", "/proc/",
+                                              "folder/sub/missing/", std::string(300, 'f') + "/"};
+    const std::vector<std::string> names = {"s", std::string(250, 'n'), std::string(260, 'n'), "two words", "line\nbreak",
+                                            "folder", "loop", ".", "..", "-dash", "x.partial-1-abcdef", ""};
+    const std::vector<std::string> extensions = {".ply", ".obj", ".cg", ".xyz", "", ".PLY", ".ply/"};
+    pcskeleton::SkeletonGraph skeleton;
+    skeleton.nodes = {pcskeleton::Point(0, 0, 0), pcskeleton::Point(1, 0, 0)};
+    skeleton.radii = {0.1, 0.1};
+    skeleton.edges = {{0, 1}};
+    const auto entries = [&] {
+        std::size_t count = 0;
+        for (auto it = fs::recursive_directory_iterator(root, fs::directory_options::skip_permission_denied);
+             it != fs::recursive_directory_iterator(); ++it) {
+            ++count;
+        }
+        return count;
+    };
+    const std::size_t before = entries();
+    for (long p = 0; p < paths; ++p) {
+        const std::string relative = folders[mutator.below(folders.size())] + names[mutator.below(names.size())] +
+                                     extensions[mutator.below(extensions.size())];
+        const std::string path = relative.front() == '/' ? relative : (root / relative).string();
+        const bool asSkeleton = mutator.below(2) == 0;
+        ++tally.executions;
+        std::error_code ignored;
+        const bool existed = fs::exists(fs::symlink_status(path, ignored));
+        switch (readOnce(path, [&] {
+            pcskeleton::checkWritable(path);
+            if (asSkeleton) pcskeleton::writeSkeleton(skeleton, path);
+            else pcskeleton::writePointCloud(skeleton.nodes, path);
+        })) {
+            case Accepted:
+                ++tally.accepted;
+                if (!fs::is_regular_file(path, ignored)) {
+                    std::cerr << "DEFECT: writing '" << path << "' was accepted but wrote no file\n";
+                    ++tally.defects;
+                }
+                if (!existed) fs::remove(path, ignored);
+                break;
+            case Refused: ++tally.refused; break;
+            case Defect: ++tally.defects; break;
+        }
+        if (entries() != before) {
+            std::cerr << "DEFECT: writing '" << path << "' left a file behind\n";
+            ++tally.defects;
+            fs::remove_all(root);
+            return;
+        }
+    }
+    fs::remove_all(root);
+}
+
 Bytes readAll(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
     return Bytes(std::istreambuf_iterator<char>(in), {});
@@ -313,6 +377,13 @@ int main(int argc, char** argv) {
         total.refused += tally.refused;
         total.defects += tally.defects;
     }
+    Mutator pathMutator(seed);
+    Tally& paths = byFormat["(output paths)"];
+    fuzzOutputPaths(work, pathMutator, mutations, paths);
+    total.executions += paths.executions;
+    total.accepted += paths.accepted;
+    total.refused += paths.refused;
+    total.defects += paths.defects;
     std::printf("%-30s %10s %10s %10s %8s\n", "seed file", "reads", "accepted", "refused", "defects");
     for (const auto& [name, t] : byFormat) {
         std::printf("%-30s %10ld %10ld %10ld %8ld\n", name.c_str(), t.executions, t.accepted, t.refused, t.defects);
