@@ -454,12 +454,11 @@ int main(int argc, char** argv) {
             progress = [](int percent, const char* what) { std::fprintf(stderr, "\r%3d%% %-40s", percent, what); };
         }
         std::string report;
-        SkeletonGraph skeleton;
         // Every output is computed before any is written, so that a failure leaves none.
         std::vector<std::pair<std::string, std::function<void()>>> writes;
-        SkeletonResult result;
+        SkeletonResult result;  // with --skeleton, only its skeleton: the one read
         if (!options.skeleton.empty()) {
-            skeleton = readSkeleton(options.skeleton);
+            result.skeleton = readSkeleton(options.skeleton);
         } else {
             result = computeCurveSkeleton(points, options.parameters, progress);
             if (showProgress) std::fprintf(stderr, "\r%-46s\r", "");
@@ -482,10 +481,9 @@ int main(int argc, char** argv) {
                              s.subsampling, s.neighbourhoods, s.contraction, s.thinning, s.embedding, s.finishing, report.c_str());
             }
         }
-        const SkeletonGraph& reconstructed = options.skeleton.empty() ? result.skeleton : skeleton;
         Reconstruction surface;
         if (!options.surface.empty()) {
-            surface = reconstructFromSkeleton(points, reconstructed, options.reconstruction, progress);
+            surface = reconstructFromSkeleton(points, result.skeleton, options.reconstruction, progress);
             if (showProgress) std::fprintf(stderr, "\r%-46s\r", "");
             writes.emplace_back(options.surface, [&] { writeTriangleMesh(surface.mesh, options.surface); });
             const std::string surfaceReport = describe(surface.report, commandLineTerms());

@@ -185,11 +185,7 @@ ContractionInput::ContractionInput(const PointList& input, const ResolutionParam
     // the test has neighbours would be alone with its copies); each copy then follows its
     // position's keeper.
     const ExactDuplicates duplicates = findExactDuplicates(input);
-    PointList distinct;
-    if (duplicates.any()) {
-        distinct.reserve(duplicates.firstOf.size());
-        for (int first : duplicates.firstOf) distinct.push_back(input[std::size_t(first)]);
-    }
+    const PointList distinct = duplicates.any() ? distinctPoints(input, duplicates) : PointList{};
     const PointList& positions = duplicates.any() ? distinct : input;
     const std::vector<char> outlier = findOutliers(positions, outliers);
     report(progress, 80, "Multi-resolution: subsample");

@@ -37,9 +37,7 @@ void mergeExactDuplicates(const PointList& input, NormalizedCloud& cloud) {
         std::iota(cloud.uniqueIndex.begin(), cloud.uniqueIndex.end(), 0);
         return;
     }
-    cloud.points.clear();
-    cloud.points.reserve(duplicates.firstOf.size());
-    for (int first : duplicates.firstOf) cloud.points.push_back(input[std::size_t(first)]);
+    cloud.points = distinctPoints(input, duplicates);
     cloud.uniqueIndex = duplicates.groupOf;
 }
 
@@ -144,6 +142,13 @@ ExactDuplicates findExactDuplicates(const PointList& points) {
         }
     }
     return duplicates;
+}
+
+PointList distinctPoints(const PointList& points, const ExactDuplicates& duplicates) {
+    PointList distinct;
+    distinct.reserve(duplicates.firstOf.size());
+    for (int first : duplicates.firstOf) distinct.push_back(points[std::size_t(first)]);
+    return distinct;
 }
 
 void rejectUnrepresentableScale(const PointList& points, const std::string& what) {

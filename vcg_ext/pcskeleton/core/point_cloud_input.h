@@ -48,6 +48,8 @@ struct ExactDuplicates {
     bool any() const { return !groupOf.empty(); }
 };
 ExactDuplicates findExactDuplicates(const PointList& points);
+// Each group's position once, in group order (call only when duplicates.any()).
+PointList distinctPoints(const PointList& points, const ExactDuplicates& duplicates);
 
 // Throws InvalidInput when the cloud's extent or position cannot be worked in: squared
 // distances of its coordinates must be representable as doubles (no overflow to infinity,

@@ -4,15 +4,15 @@
 #include <unistd.h>
 
 #include <fstream>
-#include <sstream>
 #include <string>
 
 namespace pcskeleton {
 
 namespace {
 
-// A number read from a control-group file; 0 for "max", a missing file or anything else.
-double cgroupNumber(const std::string& path) {
+// The first number of a file (a control group's, /proc/self/statm); 0 for "max", a
+// missing file or anything else.
+double firstNumberIn(const std::string& path) {
     std::ifstream in(path);
     unsigned long long value = 0;
     if (!(in >> value)) return 0.0;
@@ -35,11 +35,11 @@ CgroupMemory cgroupMemory() {
         const std::string path = line.substr(second + 1);
         double limit = 0, used = 0;
         if (controllers.empty()) {
-            limit = cgroupNumber("/sys/fs/cgroup" + path + "/memory.max");
-            used = cgroupNumber("/sys/fs/cgroup" + path + "/memory.current");
+            limit = firstNumberIn("/sys/fs/cgroup" + path + "/memory.max");
+            used = firstNumberIn("/sys/fs/cgroup" + path + "/memory.current");
         } else if (("," + controllers + ",").find(",memory,") != std::string::npos) {
-            limit = cgroupNumber("/sys/fs/cgroup/memory" + path + "/memory.limit_in_bytes");
-            used = cgroupNumber("/sys/fs/cgroup/memory" + path + "/memory.usage_in_bytes");
+            limit = firstNumberIn("/sys/fs/cgroup/memory" + path + "/memory.limit_in_bytes");
+            used = firstNumberIn("/sys/fs/cgroup/memory" + path + "/memory.usage_in_bytes");
             if (limit >= 1e18) limit = 0;  // v1 writes "no limit" as a huge number
         }
         if (limit > 0 && (memory.limit == 0 || limit - used < memory.limit - memory.used)) memory = {limit, used};
@@ -48,12 +48,7 @@ CgroupMemory cgroupMemory() {
 }
 
 // The address space the process maps now (VmSize), in bytes.
-double mappedBytes() {
-    std::ifstream in("/proc/self/statm");
-    double pages = 0;
-    in >> pages;
-    return pages * double(sysconf(_SC_PAGE_SIZE));
-}
+double mappedBytes() { return firstNumberIn("/proc/self/statm") * double(sysconf(_SC_PAGE_SIZE)); }
 
 }  // namespace
 

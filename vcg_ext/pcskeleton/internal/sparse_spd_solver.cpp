@@ -65,7 +65,6 @@ struct SparseSpdSolver::Impl {
     Eigen::CholmodSupernodalLLT<Matrix, Eigen::Lower> cholmod;
     Eigen::SimplicialLDLT<Matrix, Eigen::Lower> simplicial;
     std::vector<int> analysedOuter, analysedInner;
-    bool analysed = false;  // CHOLMOD's analysis of the remembered pattern succeeded
 
     bool samePattern(const Matrix& m) const {
         return m.nonZeros() == static_cast<Eigen::Index>(analysedInner.size()) &&
@@ -73,6 +72,8 @@ struct SparseSpdSolver::Impl {
                std::equal(analysedOuter.begin(), analysedOuter.end(), m.outerIndexPtr()) &&
                std::equal(analysedInner.begin(), analysedInner.end(), m.innerIndexPtr());
     }
+
+    void forgetPattern() { analysedOuter.clear(), analysedInner.clear(); }
 
     void rememberPattern(const Matrix& m) {
         analysedOuter.assign(m.outerIndexPtr(), m.outerIndexPtr() + m.outerSize() + 1);
@@ -100,11 +101,11 @@ bool SparseSpdSolver::factorize(const Matrix& m) {
             settings.method[0].ordering = m.rows() > 50000 ? CHOLMOD_METIS : CHOLMOD_AMD;
             impl_->cholmod.analyzePattern(m);
             // Eigen reports success even when CHOLMOD could not analyse (out of memory) and
-            // would then factorise with a null factor.
-            impl_->analysed = settings.status >= CHOLMOD_OK;
+            // would then factorise with a null factor: forget the pattern, so that a later
+            // call analyses it again, and refuse.
+            if (settings.status < CHOLMOD_OK) impl_->forgetPattern();
             throwIfCholmodFailed(settings);
         }
-        if (!impl_->analysed) throw std::logic_error("SparseSpdSolver: factorising after a failed analysis");
         impl_->cholmod.factorize(m);
         // Running out of memory half-way leaves a partial factor that Eigen reports as a
         // numerical failure: it is not one.

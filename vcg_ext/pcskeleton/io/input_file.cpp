@@ -235,7 +235,6 @@ std::string createTemporary(const std::string& path, int& error) {
 
 void checkWritable(const std::string& path) {
     const auto refuse = [&](const std::string& why) { throw InvalidInput("Cannot write '" + path + "': " + why); };
-    if (path.empty()) refuse("no file name.");
     const TemporaryName name = temporaryName(path);
     const std::string file = path.substr(name.folder.size());
     const long longest = ::pathconf(name.folder.empty() ? "." : name.folder.c_str(), _PC_NAME_MAX);
