@@ -1,6 +1,7 @@
 // Known-answer tests of the whole pipeline (contraction, thinning, embedding, tip
 // extension) on tubes along known curves.
 #include <pcskeleton/curve_skeleton.h>
+#include <pcskeleton/contraction/contraction_memory.h>
 #include <pcskeleton/io/point_cloud_io.h>
 #include "support/sampled_shapes.h"
 
@@ -119,7 +120,7 @@ TEST(CurveSkeleton, NonUniformTubeKeepsItsTopology) {
 TEST(CurveSkeleton, CorrespondenceAndRadiiDescribeTheTube) {
     const PointList cloud = shapes::cylinder(5000, 0.1, 1.0, /*capped=*/false);
     SkeletonParameters paperSteps;
-    paperSteps.thinning.extendTips = false;  // its end nodes own no points (TipExtension tests them)
+    paperSteps.graph.extendTips = false;  // its end nodes own no points (TipExtension tests them)
     const SkeletonResult result = computeCurveSkeleton(cloud, paperSteps);
     const SkeletonGraph& s = result.skeleton;
     ASSERT_EQ(s.pointNode.size(), cloud.size());
@@ -156,7 +157,7 @@ TEST(CurveSkeleton, TwoStagesEqualOneCall) {
     const PointList cloud = shapes::torus(3000, 1.0, 0.3);
     const SkeletonResult oneCall = computeCurveSkeleton(cloud);
     const SkeletonGraph fromContracted =
-        skeletonFromContractedPoints(cloud, oneCall.contraction.contracted, ContractionParameters{}, ThinningParameters()).skeleton;
+        skeletonFromContractedPoints(cloud, oneCall.contraction.contracted, ContractionParameters{}, SkeletonGraphParameters()).skeleton;
     EXPECT_EQ(fromContracted.edges, oneCall.skeleton.edges);
     EXPECT_EQ(fromContracted.pointNode, oneCall.skeleton.pointNode);
 }
@@ -189,9 +190,9 @@ TEST(CurveSkeleton, ExtremeScalesKeepTheTorusCycle) {
 
 TEST(CurveSkeleton, SamplingRadiusMustBeAFraction) {
     SkeletonParameters p;
-    p.thinning.sampleRadius = 0;
+    p.graph.nodeSpacing = 0;
     EXPECT_THROW(computeCurveSkeleton(shapes::sphere(500, 1.0), p), InvalidInput);
-    p.thinning.sampleRadius = 1.5;
+    p.graph.nodeSpacing = 1.5;
     EXPECT_THROW(computeCurveSkeleton(shapes::sphere(500, 1.0), p), InvalidInput);
 }
 
@@ -207,7 +208,7 @@ void expectTheKnotsOneLoop(const std::string& file, int bridges, int unrefinedCy
     EXPECT_EQ(q.refinement.bridgesCut, bridges) << describe(q.refinement);
     EXPECT_TRUE(q.topology.cycles == 1 && q.topology.tips == 0 && q.topology.components == 1) << describe(q.topology);
     SkeletonParameters unrefined;
-    unrefined.thinning.refine = false;
+    unrefined.graph.refine = false;
     EXPECT_EQ(computeCurveSkeleton(scan, unrefined).quality.topology.cycles, unrefinedCycles);
 }
 
@@ -240,17 +241,17 @@ TEST(CurveSkeleton, NoisyThreeRingsKeepTheirThreeLoopsOnly) {
 
     // Left whole as a narrow loop, the loop goes at the bone across the gap between the rings.
     SkeletonParameters noNarrowLoop;
-    noNarrowLoop.thinning.narrowLoops.minOpening = 0;
+    noNarrowLoop.graph.refinementLimits.minOpening = 0;
     const SkeletonQuality gap = computeCurveSkeleton(scan, noNarrowLoop).quality;
     EXPECT_EQ(gap.topology.cycles, 3) << describe(gap.topology);
     EXPECT_EQ(gap.refinement.bridgesCut, 1) << describe(gap.refinement);
     SkeletonParameters keepEveryLoop = noNarrowLoop;
-    keepEveryLoop.thinning.narrowLoops.gapStretch = 0;
+    keepEveryLoop.graph.refinementLimits.gapStretch = 0;
     EXPECT_EQ(computeCurveSkeleton(scan, keepEveryLoop).quality.topology.cycles, 4);
 
     // Without refinement the loop stays, and the report says what it probably is.
     SkeletonParameters unrefined;
-    unrefined.thinning.refine = false;
+    unrefined.graph.refine = false;
     const SkeletonQuality q = computeCurveSkeleton(scan, unrefined).quality;
     EXPECT_EQ(q.topology.cycles, 4) << describe(q.topology);
     EXPECT_EQ(q.contactLoops.size(), 1u);
@@ -267,17 +268,17 @@ TEST(CurveSkeleton, NoisyThreeRingsKeepTheirThreeLoopsOnly) {
 TEST(CurveSkeleton, NarrowLoopLimitsMustBeInRange) {
     const PointList cloud = shapes::sphere(500, 1.0);
     SkeletonParameters p;
-    p.thinning.narrowLoops.minOpening = -1;
+    p.graph.refinementLimits.minOpening = -1;
     EXPECT_THROW(computeCurveSkeleton(cloud, p), InvalidInput);
-    p.thinning.narrowLoops.minOpening = std::nan("");
-    EXPECT_THROW(computeCurveSkeleton(cloud, p), InvalidInput);
-    p = SkeletonParameters();
-    p.thinning.narrowLoops.minClearance = 1.5;
+    p.graph.refinementLimits.minOpening = std::nan("");
     EXPECT_THROW(computeCurveSkeleton(cloud, p), InvalidInput);
     p = SkeletonParameters();
-    p.thinning.narrowLoops.gapStretch = 0.5;
+    p.graph.refinementLimits.minClearance = 1.5;
     EXPECT_THROW(computeCurveSkeleton(cloud, p), InvalidInput);
-    p.thinning.narrowLoops.gapStretch = std::numeric_limits<double>::infinity();
+    p = SkeletonParameters();
+    p.graph.refinementLimits.gapStretch = 0.5;
+    EXPECT_THROW(computeCurveSkeleton(cloud, p), InvalidInput);
+    p.graph.refinementLimits.gapStretch = std::numeric_limits<double>::infinity();
     EXPECT_THROW(computeCurveSkeleton(cloud, p), InvalidInput);
 }
 

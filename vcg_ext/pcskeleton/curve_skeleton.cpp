@@ -1,10 +1,10 @@
 #include "pcskeleton/curve_skeleton.h"
 
-#include "pcskeleton/analysis/node_recentering.h"
-#include "pcskeleton/analysis/gap_bridging.h"
-#include "pcskeleton/analysis/skeleton_refinement.h"
+#include "pcskeleton/finishing/node_recentering.h"
+#include "pcskeleton/finishing/gap_bridging.h"
+#include "pcskeleton/finishing/skeleton_refinement.h"
 #include "pcskeleton/skeleton/skeleton_structure.h"
-#include "pcskeleton/internal/machine_memory.h"
+#include "pcskeleton/contraction/contraction_memory.h"
 #include "pcskeleton/internal/stopwatch.h"
 #include "pcskeleton/skeleton/skeleton_embedding.h"
 #include "pcskeleton/skeleton/skeleton_thinning.h"
@@ -17,37 +17,6 @@
 namespace pcskeleton {
 
 namespace {
-
-// Peak memory per point, measured by bench_skeleton (2 cores, 24 GB): about 2.7 KB per
-// contracted point (2667 MB at 1M points, full resolution: 1-rings, Laplacian, factor), and
-// about 135 bytes per point that is only carried (1342 MB at 10M points, multi-resolution:
-// the input, the outlier test's neighbour lists and k-d tree, the subsample's links, the
-// result's contracted positions and correspondence).
-constexpr double kBytesPerContractedPoint = 2700;
-constexpr double kBytesPerCarriedPoint = 135;
-// Fewer contracted points than this leave too few per node to be worth suggesting.
-constexpr std::size_t kFewestUsefulContractedPoints = 2000;
-
-void refuseWorkLargerThanMemory(std::size_t points, const ResolutionParameters& parameters) {
-    const double needed = estimatedPeakBytes(points, parameters.maxContractedPoints);
-    const MemoryAllowance allowance = usableMemory();
-    const bool userLimit = parameters.memoryLimit > 0 && !(allowance.bytes > 0 && allowance.bytes < parameters.memoryLimit);
-    const double limit = userLimit ? parameters.memoryLimit : allowance.bytes;
-    if (!(limit > 0) || needed <= limit) return;
-    std::ostringstream text;
-    text.precision(2);
-    text << "A skeleton of " << points << " points, " << (parameters.maxContractedPoints == 0 ? "all" : "at most")
-         << " " << (parameters.maxContractedPoints == 0 ? points : std::min(points, parameters.maxContractedPoints))
-         << " of them contracted, needs about " << needed / 1e9 << " GB of memory, more than the "
-         << limit / 1e9 << " GB " << (userLimit ? std::string("allowed") : std::string("that ") + allowance.limit + " leaves");
-    // The most contracted points that would fit, every other point only carried.
-    const double fitting = (limit - kBytesPerCarriedPoint * double(points)) / (kBytesPerContractedPoint - kBytesPerCarriedPoint);
-    if (fitting >= double(kFewestUsefulContractedPoints)) {
-        text << "; at most " << std::size_t(fitting) << " contracted points would fit";
-        throw InvalidInput(text.str() + ".", {Remedy::lower(Parameter::ContractedPoints)});
-    }
-    throw InvalidInput(text.str() + ": split the scan, or use a machine with more memory.");
-}
 
 // The input points in the input's frame and order (duplicates merged by the cloud keep
 // their common position).
@@ -62,10 +31,10 @@ PointList inputPoints(const NormalizedCloud& cloud) {
 // points (normalised frame). Fills result.skeleton, result.quality and the seconds of
 // thinning, embedding and finishing.
 void thinAndEmbed(const NormalizedCloud& cloud, const OneRings& rings, const PointList& contracted,
-                  const ThinningParameters& parameters, SkeletonResult& result, const ProgressCallback& progress) {
-    checkThinningParameters(parameters);
+                  const SkeletonGraphParameters& parameters, SkeletonResult& result, const ProgressCallback& progress) {
+    checkSkeletonGraphParameters(parameters);
     Stopwatch stage;
-    const double radius = parameters.sampleRadius * cloud.diagonal;
+    const double radius = parameters.nodeSpacing * cloud.diagonal;
     const double maxLinkLength = parameters.linkLimit > 0 ? parameters.linkLimit * radius
                                                           : std::numeric_limits<double>::infinity();
     const ThinnedGraph thinned = thinContractedPoints(cloud.points, contracted, rings, radius, maxLinkLength, progress);
@@ -85,7 +54,7 @@ void thinAndEmbed(const NormalizedCloud& cloud, const OneRings& rings, const Poi
     if (parameters.recentre) recentering = recentreOneSidedNodes(result.skeleton, points);
     RefinementReport refinement;
     if (parameters.refine) {
-        refinement = refineSkeleton(result.skeleton, points, nodeSpacing, parameters.narrowLoops);
+        refinement = refineSkeleton(result.skeleton, points, nodeSpacing, parameters.refinementLimits);
         for (int& node : recentering.nodes) node = refinement.nodeMap[node];
         std::sort(recentering.nodes.begin(), recentering.nodes.end());
         recentering.nodes.erase(std::unique(recentering.nodes.begin(), recentering.nodes.end()), recentering.nodes.end());
@@ -97,7 +66,7 @@ void thinAndEmbed(const NormalizedCloud& cloud, const OneRings& rings, const Poi
     const GapBridgingReport bridging = bridgeGaps(result.skeleton, nodeSpacing, parameters.gapLimit);
     result.quality = assessSkeleton(result.skeleton, cloud, rings, contracted, nodeSpacing);
     if (!parameters.refine) {
-        for (ContactLoop& loop : contactLoops(result.skeleton, points, parameters.narrowLoops)) {
+        for (ContactLoop& loop : contactLoops(result.skeleton, points, parameters.refinementLimits)) {
             result.quality.contactLoops.push_back(std::move(loop.cycle));
         }
     }
@@ -123,7 +92,14 @@ void thinAndEmbed(const NormalizedCloud& cloud, const OneRings& rings, const Poi
 
 }  // namespace
 
-void checkThinningParameters(const ThinningParameters& parameters) {
+void checkResolutionParameters(const ResolutionParameters& parameters) {
+    if (!(parameters.memoryLimit >= 0 && std::isfinite(parameters.memoryLimit))) {
+        throw InvalidInput(Problem::aboutParameter(
+            Parameter::MemoryLimit, "must be 0 (automatic) or a positive number of GB."));
+    }
+}
+
+void checkSkeletonGraphParameters(const SkeletonGraphParameters& parameters) {
     if (!(parameters.linkLimit >= 0.0 && std::isfinite(parameters.linkLimit))) {
         throw InvalidInput(Problem::aboutParameter(
             Parameter::LinkLimit, "must be 0 (every link connects, the paper's rule) or a positive number of node spacings."));
@@ -132,29 +108,29 @@ void checkThinningParameters(const ThinningParameters& parameters) {
         throw InvalidInput(Problem::aboutParameter(
             Parameter::GapLimit, "must be 0 (no bridge, the paper's skeleton) or a positive number of node spacings."));
     }
-    if (!(parameters.narrowLoops.minOpening >= 0.0 && std::isfinite(parameters.narrowLoops.minOpening))) {
+    if (!(parameters.refinementLimits.minOpening >= 0.0 && std::isfinite(parameters.refinementLimits.minOpening))) {
         throw InvalidInput(Problem::aboutParameter(
             Parameter::LoopOpening, "must be 0 (no loop is opened) or a positive number of tube radii."));
     }
-    if (!(parameters.narrowLoops.minClearance >= 0.0 && parameters.narrowLoops.minClearance <= 1.0)) {
+    if (!(parameters.refinementLimits.minClearance >= 0.0 && parameters.refinementLimits.minClearance <= 1.0)) {
         throw InvalidInput(Problem::aboutParameter(
             Parameter::LoopClearance, "must be a fraction of a bone's radius between 0 and 1."));
     }
-    const double gapStretch = parameters.narrowLoops.gapStretch;
+    const double gapStretch = parameters.refinementLimits.gapStretch;
     if (!(gapStretch == 0.0 || (gapStretch >= 1.0 && std::isfinite(gapStretch)))) {
         throw InvalidInput(Problem::aboutParameter(
             Parameter::GapStretch, "must be 0 (no bone is cut) or at least 1 (a shorter bone is inside the tubes at its "
                                    "ends)."));
     }
-    if (!(parameters.sampleRadius > 0.0 && parameters.sampleRadius < 1.0)) {
+    if (!(parameters.nodeSpacing > 0.0 && parameters.nodeSpacing < 1.0)) {
         std::ostringstream requirement;
         requirement << "must be a fraction of the bounding-box diagonal between 0 and 1 (the paper uses 0.02); got "
-                    << parameters.sampleRadius << ".";
+                    << parameters.nodeSpacing << ".";
         throw InvalidInput(Problem::aboutParameter(Parameter::NodeSpacing, requirement.str()));
     }
 }
 
-SkeletonResult skeletonFromContraction(const LaplacianContraction& contraction, const ThinningParameters& parameters,
+SkeletonResult skeletonFromContraction(const LaplacianContraction& contraction, const SkeletonGraphParameters& parameters,
                                        const ProgressCallback& progress) {
     SkeletonResult result;
     result.contraction = contraction.result();
@@ -165,15 +141,10 @@ SkeletonResult skeletonFromContraction(const LaplacianContraction& contraction, 
     return result;
 }
 
-double estimatedPeakBytes(std::size_t points, std::size_t maxContractedPoints) {
-    const std::size_t contracted = maxContractedPoints == 0 ? points : std::min(points, maxContractedPoints);
-    return kBytesPerContractedPoint * double(contracted) + kBytesPerCarriedPoint * double(points - contracted);
-}
-
 ContractionInput::ContractionInput(const PointList& input, const ResolutionParameters& parameters,
                                    const OutlierParameters& outliers, const ProgressCallback& progress)
     : input_(input) {
-    refuseWorkLargerThanMemory(input.size(), parameters);
+    refuseWorkLargerThanMemory(input.size(), parameters.maxContractedPoints, parameters.memoryLimit);
     if (parameters.maxContractedPoints == 0 || input.size() <= parameters.maxContractedPoints) return;
     const Stopwatch stopwatch;
     // The grid needs finite coordinates; the contraction would refuse these anyway.
@@ -239,21 +210,29 @@ void ContractionInput::carryToAllPoints(SkeletonResult& result) const {
     result.quality.subsampleCellSize = subsample_.cellSize;
 }
 
+SkeletonPipeline::SkeletonPipeline(const PointList& input, const SkeletonParameters& parameters,
+                                   const ProgressCallback& progress)
+    : parameters_((checkContractionParameters(parameters.contraction), checkSkeletonGraphParameters(parameters.graph),
+                   checkResolutionParameters(parameters.resolution), parameters)),
+      input_(input, parameters.resolution, parameters.contraction.outliers, progressRange(progress, 0, 40)),
+      contraction_(input_.points(), parameters.contraction, progressRange(progress, 40, 100)) {}
+
+SkeletonResult SkeletonPipeline::skeleton(const ProgressCallback& progress) const {
+    SkeletonResult result = skeletonFromContraction(contraction_, parameters_.graph, progress);
+    input_.carryToAllPoints(result);
+    return result;
+}
+
 SkeletonResult computeCurveSkeleton(const PointList& input, const SkeletonParameters& parameters,
                                     const ProgressCallback& progress) {
-    checkThinningParameters(parameters.thinning);
-    const ContractionInput work(input, parameters.resolution, parameters.contraction.outliers,
-                                progressRange(progress, 0, 10));
-    LaplacianContraction contraction(work.points(), parameters.contraction, progressRange(progress, 10, 25));
-    contraction.iterateToEnd(progressRange(progress, 25, 90));
-    SkeletonResult result = skeletonFromContraction(contraction, parameters.thinning, progressRange(progress, 90, 100));
-    work.carryToAllPoints(result);
-    return result;
+    SkeletonPipeline pipeline(input, parameters, progressRange(progress, 0, 25));
+    pipeline.contraction().iterateToEnd(progressRange(progress, 25, 90));
+    return pipeline.skeleton(progressRange(progress, 90, 100));
 }
 
 SkeletonResult skeletonFromContractedPoints(const PointList& input, const PointList& contracted,
                                             const ContractionParameters& contraction,
-                                            const ThinningParameters& parameters, const ProgressCallback& progress) {
+                                            const SkeletonGraphParameters& parameters, const ProgressCallback& progress) {
     if (contracted.size() != input.size()) {
         std::ostringstream message;
         message << "The contracted layer has " << contracted.size() << " points but its input has " << input.size()

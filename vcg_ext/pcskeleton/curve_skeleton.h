@@ -11,45 +11,38 @@
 #include "pcskeleton/contraction/laplacian_contraction.h"
 #include "pcskeleton/contraction/point_subsampling.h"
 #include "pcskeleton/skeleton/skeleton_graph.h"
-#include "pcskeleton/analysis/skeleton_quality.h"
-#include "pcskeleton/analysis/skeleton_refinement.h"
+#include "pcskeleton/finishing/skeleton_quality.h"
+#include "pcskeleton/finishing/skeleton_refinement.h"
 
 namespace pcskeleton {
 
-struct ThinningParameters {
+// Everything after the contraction: thinning and embedding (steps 4-5), then the steps
+// this project added. Why each default is what it is: docs/benchmarks.md.
+struct SkeletonGraphParameters {
     // Radius r of the sampling balls, as a fraction of the input's bounding-box diagonal
     // (the paper's 0.02). Larger: fewer nodes, small loops and close parts merge;
     // smaller: more nodes, noise may survive as spurs and tiny loops.
-    double sampleRadius = 0.02;
+    double nodeSpacing = 0.02;
     // Extend each limb to the end of its tip's points (tip_extension.h): contraction
-    // leaves limbs short. On by default: the robustness suite (bench_robustness) measures
-    // the gap to the shapes' ends with and without.
+    // leaves limbs short.
     bool extendTips = true;
-    // 1-ring neighbours whose contracted points ended more than this many sample radii
+    // 1-ring neighbours whose contracted points ended more than this many node spacings
     // apart were pulled to different bones (parts that touch, noise across a gap): they
     // connect their nodes only where nothing else does, so they close no cycle. 0 = every
-    // 1-ring pair connects, the paper's rule. 4 by bench_robustness (--no-link-limit against
-    // the default): it removes the false loops of 3 cases of 132 (three rings with 5%
-    // outliers, the elephant under 2% noise, the knot with 1% outliers) and breaks none;
-    // 1.5-2 cut real bones of parts that contracted less.
+    // 1-ring pair connects, the paper's rule.
     double linkLimit = 4.0;
     // Remove spurs, redundant limbs and loops without a hole, merge close junctions
-    // (skeleton_refinement.h). On by default: on the robustness suite (bench_robustness
-    // --no-refine against the default) it turns 6 wrong topologies of 132 right (spurs from
-    // misaligned and one-view scans) and none wrong.
+    // (skeleton_refinement.h).
     bool refine = true;
-    // Part of refinement: a loop narrower than its tube whose most stretched bone passes
-    // through the surface is opened there (parts that touch, noise across a narrow gap).
-    NarrowLoopLimits narrowLoops;
+    // Part of refinement: loops narrower than their tube opened where parts touch, bones
+    // straight across a gap cut (skeleton_structure.h).
+    RefinementLimits refinementLimits;
     // Move nodes whose points cover one side of their bone only (one-view scans, holes) to
     // the centre of the circle through those points (node_recentering.h).
     bool recentre = true;
     // Join pieces of the skeleton across gaps in the data at most this many node spacings
     // long, where a tip's limb points at another piece (gap_bridging.h). 0 = no bridge,
-    // the paper's. 8 by bench_robustness (--gap-limit 0
-    // against the default): the elephant and the knot scanned from one view come out
-    // whole instead of in two pieces (their gaps, after tip extension, are 5-8 node
-    // spacings; 5 joins neither) and no other case of 132 changes.
+    // the paper's.
     double gapLimit = 8.0;
 };
 
@@ -57,14 +50,11 @@ struct ResolutionParameters {
     // A cloud with more points than this is contracted through a well-spread subsample of
     // at most this many (point_subsampling.h), and every input point takes the node of the
     // subsample point that stands for it; radii come from all points. 0 = contract every
-    // point (the paper's). Not in the paper. 15000 by measurement (README, Benchmarks): on
-    // the robustness suite sampled at 100K points 108 of 132 cases right (20000: 103; full
-    // resolution: 74, its k of at most 30 neighbours covering less of the shape), 100K
-    // points in 1.3 s; the paper's tree_small keeps its branches down to 15000 (12000
-    // gives a false loop).
+    // point (the paper's). Not in the paper; chosen on the robustness suite at 100K points
+    // and on the paper's tree (docs/benchmarks.md).
     std::size_t maxContractedPoints = 15000;
     // Work whose estimated peak memory exceeds this many bytes is refused before it starts;
-    // 0 = 80% of the machine's physical memory.
+    // 0 = what the machine and the process's limits allow (machine_memory.h).
     double memoryLimit = 0.0;
 };
 // The default subsample is solved without BLAS, so default runs give the same skeleton
@@ -72,23 +62,26 @@ struct ResolutionParameters {
 static_assert(ResolutionParameters{}.maxContractedPoints <= std::size_t(kLargestPortableSystem),
               "default contractions must stay within the portable solver's range");
 
+// Throws InvalidInput naming the first unusable parameter.
+void checkResolutionParameters(const ResolutionParameters& parameters);
+
 struct SkeletonParameters {
     ContractionParameters contraction;
-    ThinningParameters thinning;
+    SkeletonGraphParameters graph;
     ResolutionParameters resolution;
 
     // Turns off every step that is not the paper's (outlier detection, denoising, the
-    // stretched-link limit, re-centring, refinement, gap bridging, tip extension), keeping
-    // every other setting.
+    // stretched-link limit, re-centring, refinement, gap bridging, tip extension, the
+    // subsample), keeping every other setting.
     void keepToThePaper() {
         resolution.maxContractedPoints = 0;
         contraction.outliers.detect = false;
         contraction.denoisingPasses = 0;
-        thinning.recentre = false;
-        thinning.refine = false;
-        thinning.extendTips = false;
-        thinning.linkLimit = 0;
-        thinning.gapLimit = 0;
+        graph.recentre = false;
+        graph.refine = false;
+        graph.extendTips = false;
+        graph.linkLimit = 0;
+        graph.gapLimit = 0;
     }
     // The paper's pipeline exactly, with its defaults.
     static SkeletonParameters paper() {
@@ -146,19 +139,45 @@ private:
     double seconds_ = 0;
 };
 
-// Estimated peak memory, in bytes, of the skeleton of `points` points contracting at most
-// `maxContractedPoints` of them (0 = all).
-double estimatedPeakBytes(std::size_t points, std::size_t maxContractedPoints);
-
 // Throws InvalidInput for parameters thinning cannot use; call it before a long
 // contraction whose result would be thinned with them.
-void checkThinningParameters(const ThinningParameters& parameters);
+void checkSkeletonGraphParameters(const SkeletonGraphParameters& parameters);
+
+// The whole computation on one cloud, in the steps a front end may want to watch or pause;
+// every way of computing a skeleton goes through it.
+//
+//     SkeletonPipeline pipeline(points, parameters);   // checks, memory, subsample, 1-rings
+//     while (!pipeline.contraction().finished()) pipeline.contraction().iterate();
+//     SkeletonResult result = pipeline.skeleton();      // steps 4-5 and after, every point
+//
+// The constructor refuses (InvalidInput), before any long work, parameters the pipeline
+// cannot use and work that would not fit in memory. `input` must outlive the pipeline.
+class SkeletonPipeline {
+public:
+    SkeletonPipeline(const PointList& input, const SkeletonParameters& parameters,
+                     const ProgressCallback& progress = {});
+
+    const SkeletonParameters& parameters() const { return parameters_; }
+    // What is contracted: every point, or the subsample.
+    const ContractionInput& input() const { return input_; }
+    LaplacianContraction& contraction() { return contraction_; }
+    const LaplacianContraction& contraction() const { return contraction_; }
+
+    // Steps 4-5 and what follows them on the contraction's current state, carried to every
+    // input point.
+    SkeletonResult skeleton(const ProgressCallback& progress = {}) const;
+
+private:
+    SkeletonParameters parameters_;
+    ContractionInput input_;
+    LaplacianContraction contraction_;
+};
 
 SkeletonResult computeCurveSkeleton(const PointList& input, const SkeletonParameters& parameters = {},
                                     const ProgressCallback& progress = {});
 
 // Steps 4-5 and what follows them, on the current state of a contraction.
-SkeletonResult skeletonFromContraction(const LaplacianContraction& contraction, const ThinningParameters& parameters,
+SkeletonResult skeletonFromContraction(const LaplacianContraction& contraction, const SkeletonGraphParameters& parameters,
                                        const ProgressCallback& progress = {});
 
 // The same for `contracted` (one point per input point, same order) made earlier from
@@ -166,7 +185,7 @@ SkeletonResult skeletonFromContraction(const LaplacianContraction& contraction, 
 // its k (0 = the paper's rule) and outlier parameters.
 SkeletonResult skeletonFromContractedPoints(const PointList& input, const PointList& contracted,
                                             const ContractionParameters& contraction,
-                                            const ThinningParameters& parameters,
+                                            const SkeletonGraphParameters& parameters,
                                             const ProgressCallback& progress = {});
 
 }  // namespace pcskeleton

@@ -1,5 +1,7 @@
 #include "pcskeleton/contraction/laplacian_contraction.h"
 
+#include "pcskeleton/contraction/contraction_memory.h"
+
 #include "pcskeleton/internal/gram_matrix.h"
 #include "pcskeleton/internal/stopwatch.h"
 
@@ -22,7 +24,9 @@ bool diverged(const PointList& points) {
     });
 }
 
-void checkParameters(const ContractionParameters& p) {
+}  // namespace
+
+void checkContractionParameters(const ContractionParameters& p) {
     auto require = [](bool ok, Parameter parameter, const char* requirement) {
         if (!ok) throw InvalidInput(Problem::aboutParameter(parameter, requirement));
     };
@@ -46,7 +50,10 @@ void checkParameters(const ContractionParameters& p) {
     require(p.terminationThreshold >= 0 && p.terminationThreshold < 1, Parameter::TerminationThreshold,
             "must be at least 0 and below 1.");
     checkOutlierParameters(p.outliers);
+    checkDenoisingPasses(p.denoisingPasses);
 }
+
+namespace {
 
 int chooseNeighbourCount(const ContractionParameters& p, std::size_t inputSize) {
     return p.neighbourCount > 0 ? p.neighbourCount : defaultNeighbourCount(inputSize);
@@ -80,7 +87,8 @@ ContractionStart prepareContraction(const PointList& input, const ContractionPar
 LaplacianContraction::LaplacianContraction(const PointList& input, const ContractionParameters& parameters,
                                            const ProgressCallback& progress)
     : parameters_(parameters), solver_(parameters.solver) {
-    checkParameters(parameters_);
+    checkContractionParameters(parameters_);
+    refuseWorkLargerThanMemory(input.size(), 0, 0);
     ContractionStart start = prepareContraction(input, parameters_, progress);
     cloud_ = std::move(start.cloud);
     denoising_ = start.denoising;

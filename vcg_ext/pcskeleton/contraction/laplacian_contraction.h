@@ -17,7 +17,7 @@
 #include "pcskeleton/contraction/cotangent_laplacian.h"
 #include "pcskeleton/contraction/one_ring.h"
 #include "pcskeleton/contraction/point_denoising.h"
-#include "pcskeleton/core/point_cloud_input.h"
+#include "pcskeleton/contraction/point_cloud_input.h"
 #include "pcskeleton/core/progress.h"
 #include "pcskeleton/internal/sparse_spd_solver.h"
 
@@ -46,6 +46,9 @@ struct ContractionParameters {
                                             // noisy clouds, 0 = never (the paper's), 1..10 passes
     LinearSolver solver = LinearSolver::Automatic;  // no BLAS up to 20K points: the same on every CPU
 };
+
+// Throws InvalidInput naming the first unusable parameter.
+void checkContractionParameters(const ContractionParameters& parameters);
 
 enum class StopReason {
     NotStopped,
@@ -90,7 +93,8 @@ ContractionStart prepareContraction(const PointList& input, const ContractionPar
 
 class LaplacianContraction {
 public:
-    // Validates the input (throws InvalidInput) and computes the 1-rings (step 1).
+    // Validates the input and the parameters and refuses work larger than memory (throws
+    // InvalidInput), then computes the 1-rings (step 1).
     explicit LaplacianContraction(const PointList& input, const ContractionParameters& parameters = {},
                                   const ProgressCallback& progress = {});
     ~LaplacianContraction();

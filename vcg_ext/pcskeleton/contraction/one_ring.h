@@ -5,7 +5,7 @@
 // 1-ring. The fan is kept fixed while the points move; only the Laplacian weights change.
 #pragma once
 
-#include "pcskeleton/core/point_cloud_input.h"
+#include "pcskeleton/contraction/point_cloud_input.h"
 #include "pcskeleton/core/progress.h"
 
 #include <array>

@@ -38,12 +38,16 @@ DenoisingChoice chooseDenoising(const PointList& points, int neighbours, int req
         const double noise = surfaceNoise(points, neighbours);
         return {noise > kNoisySurface ? kPassesForNoisySurface : 0, noise};
     }
-    if (requested < 0 || requested > kMaximumDenoisingPasses) {
+    checkDenoisingPasses(requested);
+    return {requested, -1.0};
+}
+
+void checkDenoisingPasses(int requested) {
+    if (requested != kAutomaticDenoising && (requested < 0 || requested > kMaximumDenoisingPasses)) {
         throw InvalidInput(Problem::aboutParameter(
             Parameter::DenoisingPasses, "must be between 0 (off) and " + std::to_string(kMaximumDenoisingPasses) +
                                             ", or -1 (automatic: only noisy clouds)."));
     }
-    return {requested, -1.0};
 }
 
 PointList denoisedCopy(const PointList& points, int neighbours, int passes) {

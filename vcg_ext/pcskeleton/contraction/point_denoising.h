@@ -33,6 +33,8 @@ struct DenoisingChoice {
 // `requested` passes (0..10), or for kAutomaticDenoising kPassesForNoisySurface when the
 // cloud is noisy and none otherwise. Other values are refused (InvalidInput).
 DenoisingChoice chooseDenoising(const PointList& points, int neighbours, int requested);
+// Throws InvalidInput unless `requested` is one chooseDenoising takes.
+void checkDenoisingPasses(int requested);
 
 // passes = 0 returns the points unchanged.
 PointList denoisedCopy(const PointList& points, int neighbours, int passes);

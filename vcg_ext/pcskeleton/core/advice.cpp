@@ -1,5 +1,7 @@
 #include "pcskeleton/core/advice.h"
 
+#include "pcskeleton/core/parameter_table.h"
+
 #include <algorithm>
 #include <cctype>
 
@@ -11,40 +13,7 @@ bool Problem::suggests(const Remedy& remedy) const {
 
 namespace {
 
-std::string libraryParameterName(Parameter p) {
-    switch (p) {
-        case Parameter::NeighbourCount: return "k";
-        case Parameter::InitialContractionWeight: return "the initial contraction weight W_L0";
-        case Parameter::InitialAttractionWeight: return "the initial attraction weight W_H0";
-        case Parameter::ContractionScale: return "the contraction scale s_L";
-        case Parameter::MaxContractionWeight: return "the maximum contraction weight";
-        case Parameter::MaxAttractionWeight: return "the maximum attraction weight";
-        case Parameter::LaplacianRowLimit: return "the Laplacian row limit";
-        case Parameter::MaxIterations: return "the maximum iterations";
-        case Parameter::TerminationThreshold: return "the termination threshold";
-        case Parameter::NodeSpacing: return "the node spacing";
-        case Parameter::Refinement: return "refinement";
-        case Parameter::Resolution: return "the grid resolution";
-        case Parameter::SmoothWeight: return "the smoothness weight";
-        case Parameter::SurfaceWeight: return "the surface weight";
-        case Parameter::SkeletonWeight: return "the skeleton weight";
-        case Parameter::OutsideWeight: return "the outside weight";
-        case Parameter::OutsideDistance: return "K (outside distance, in radii)";
-        case Parameter::OutlierDetection: return "outlier detection";
-        case Parameter::OutlierIsolation: return "the outlier isolation factor";
-        case Parameter::OutlierLocalFactor: return "the outlier local factor";
-        case Parameter::OutlierClusterShare: return "the outlier cluster share";
-        case Parameter::DenoisingPasses: return "the denoising passes";
-        case Parameter::LinkLimit: return "the stretched-link limit";
-        case Parameter::GapLimit: return "the gap limit";
-        case Parameter::LoopOpening: return "the narrow-loop opening";
-        case Parameter::LoopClearance: return "the narrow-loop clearance";
-        case Parameter::GapStretch: return "the gap stretch";
-        case Parameter::ContractedPoints: return "the number of contracted points";
-        case Parameter::SkeletonTopology: return "the skeleton's topology guarantee";
-    }
-    return "a parameter";
-}
+std::string libraryParameterName(Parameter p) { return parameterInfo(p).words; }
 
 std::string libraryStep(Step s) {
     switch (s) {

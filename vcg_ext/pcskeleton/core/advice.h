@@ -12,7 +12,7 @@
 
 namespace pcskeleton {
 
-// Every parameter a remedy or a refusal can name.
+// Every parameter a user can set; core/parameter_table.h describes each.
 enum class Parameter {
     NeighbourCount,
     InitialContractionWeight,
@@ -23,26 +23,32 @@ enum class Parameter {
     LaplacianRowLimit,
     MaxIterations,
     TerminationThreshold,
+    OutlierDetection,
+    OutlierIsolation,
+    OutlierLocalFactor,
+    OutlierClusterShare,
+    DenoisingPasses,
+    ContractedPoints,
+    FullResolution,
+    MemoryLimit,
     NodeSpacing,
+    ExtendTips,
+    Recentre,
     Refinement,
+    GapLimit,
+    LinkLimit,
+    LoopOpening,
+    LoopClearance,
+    GapStretch,
     Resolution,
     SmoothWeight,
     SurfaceWeight,
     SkeletonWeight,
     OutsideWeight,
     OutsideDistance,
-    OutlierDetection,
-    OutlierIsolation,
-    OutlierLocalFactor,
-    OutlierClusterShare,
-    DenoisingPasses,
-    LinkLimit,
-    GapLimit,
-    LoopOpening,
-    LoopClearance,
-    GapStretch,
-    ContractedPoints,
     SkeletonTopology,  // the reconstruction keeps the skeleton's topology
+    PointWeights,      // the reconstruction weighs noisy points less
+    VertexFitting,     // the reconstruction's vertices move onto a local fit of the points
 };
 
 // Steps the user takes outside the computation that found the problem.

@@ -2,7 +2,7 @@
 // k nearest neighbours of the 1-rings, the balls of the thinning's sampling.
 #pragma once
 
-#include "pcskeleton/core/point_cloud_input.h"
+#include "pcskeleton/core/point.h"
 
 #include <memory>
 #include <vector>

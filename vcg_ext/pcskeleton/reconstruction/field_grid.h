@@ -1,7 +1,7 @@
 // The regular grid of nodes on which Section V's scalar field lives.
 #pragma once
 
-#include "pcskeleton/core/point_cloud_input.h"
+#include "pcskeleton/contraction/point_cloud_input.h"
 
 #include <array>
 #include <cstddef>

@@ -4,7 +4,7 @@
 // (a node with a single point takes its neighbours' radius: see fillMissingRadii).
 #pragma once
 
-#include "pcskeleton/core/point_cloud_input.h"
+#include "pcskeleton/contraction/point_cloud_input.h"
 #include "pcskeleton/skeleton/skeleton_graph.h"
 #include "pcskeleton/skeleton/skeleton_thinning.h"
 

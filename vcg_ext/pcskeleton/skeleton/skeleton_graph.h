@@ -2,7 +2,7 @@
 // stands for (the correspondence), plus the topology numbers users check first.
 #pragma once
 
-#include "pcskeleton/core/point_cloud_input.h"
+#include "pcskeleton/contraction/point_cloud_input.h"
 
 #include <array>
 #include <limits>

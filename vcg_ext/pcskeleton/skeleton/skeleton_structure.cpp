@@ -392,7 +392,7 @@ bool boneGrazesSurface(const SkeletonGraph& graph, const Edge& bone, const Point
 }
 
 std::vector<ContactLoop> contactLoops(const SkeletonGraph& graph, const PointList& points,
-                                      const NarrowLoopLimits& limits) {
+                                      const RefinementLimits& limits) {
     std::vector<ContactLoop> loops;
     if (points.empty() || !(limits.minOpening > 0.0)) return loops;
     const std::vector<std::vector<int>> nodePoints = pointsOfNodes(graph);

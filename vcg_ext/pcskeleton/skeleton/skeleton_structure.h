@@ -64,7 +64,7 @@ std::vector<std::vector<int>> strayBridges(const SkeletonGraph& graph, const std
 
 // Bones across gaps: a bone joining two junctions directly, each a junction of three or four
 // bones two of whose others meet at more than 120 degrees, on a loop, and longer than `minStretch`
-// (NarrowLoopLimits::gapStretch; 0 = none) times the two radii at its ends together, so
+// (RefinementLimits::gapStretch; 0 = none) times the two radii at its ends together, so
 // that the tubes of the strands it joins do not meet along it. Where two strands pass
 // close, thinning can join them by one such bone across the gap between them: a false
 // loop. Bones between tubes thinner than the node spacing are not judged (any bone between
@@ -110,7 +110,7 @@ bool boneGrazesSurface(const SkeletonGraph& graph, const Edge& bone, const Point
 // its two ends together; 0 = none is cut. On the suite real bones between through
 // junctions reach 1.08 (the bars of the three rings), the bones across the knot's
 // crossings 1.19-1.85; 1.15 turns 4 cases of the knot right and none wrong.
-struct NarrowLoopLimits {
+struct RefinementLimits {
     double minOpening = 1.0;     // in tube radii; 0 = no loop is a contact
     double minClearance = 0.35;  // fraction of the bone's radius
     double gapStretch = 1.15;    // times the two end radii; 0 = no bone crosses a gap
@@ -124,7 +124,7 @@ struct ContactLoop {
 // The loops of shortCycleBasis that are narrow (isNarrowCycle) and whose most stretched
 // bone grazes the surface (boneGrazesSurface); `points` are the skeleton's input points.
 std::vector<ContactLoop> contactLoops(const SkeletonGraph& graph, const PointList& points,
-                                      const NarrowLoopLimits& limits);
+                                      const RefinementLimits& limits);
 
 // Paths (through degree-2 nodes) that join two junctions and are shorter than `nodeSpacing`.
 std::vector<std::vector<int>> closeJunctionPaths(const SkeletonGraph& graph, double nodeSpacing);

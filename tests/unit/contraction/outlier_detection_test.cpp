@@ -1,7 +1,7 @@
 // Outlier detection on clouds whose outliers are known: points scattered around a torus,
 // a small far cluster; and what must stay: a real separate part, unevenly dense surfaces.
 #include <pcskeleton/core/errors.h>
-#include <pcskeleton/core/outlier_detection.h>
+#include <pcskeleton/contraction/outlier_detection.h>
 #include "support/sampled_shapes.h"
 #include "support/scan_simulation.h"
 

@@ -82,7 +82,7 @@ TEST(QualityReport, IterationLimitIsAWarning) {
 
 TEST(QualityReport, RefinementIsReportedWhenOn) {
     SkeletonParameters refine;
-    refine.thinning.refine = true;
+    refine.graph.refine = true;
     const SkeletonResult result = computeCurveSkeleton(shapes::torus(4000, 1.0, 0.3), refine);
     EXPECT_TRUE(result.quality.refined);
     EXPECT_EQ(result.quality.topology.cycles, 1) << "refinement must keep a real loop";

@@ -1,7 +1,7 @@
 // The input checks (point_cloud_input), reached as a user reaches them, through the
 // contraction: a clear InvalidInput for a cloud that cannot be processed, never a crash.
 #include <pcskeleton/contraction/laplacian_contraction.h>
-#include <pcskeleton/core/point_cloud_input.h>
+#include <pcskeleton/contraction/point_cloud_input.h>
 #include "support/sampled_shapes.h"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // Gap bridging on hand-made pieces, and through the whole pipeline on a tube with a band of
 // missing data.
-#include <pcskeleton/analysis/gap_bridging.h>
+#include <pcskeleton/finishing/gap_bridging.h>
 #include <pcskeleton/curve_skeleton.h>
 #include "support/hand_made_graphs.h"
 #include "support/sampled_shapes.h"
@@ -108,7 +108,7 @@ TEST(GapBridging, TubeWithABandOfMissingDataGivesOneSkeleton) {
     }
 
     SkeletonParameters paper;
-    paper.thinning.gapLimit = 0;
+    paper.graph.gapLimit = 0;
     EXPECT_EQ(analyseTopology(computeCurveSkeleton(cloud, paper).skeleton).components, 2);
 }
 
@@ -122,7 +122,7 @@ TEST(GapBridging, TwoSeparateParallelTubesStayTwoSkeletons) {
 TEST(GapBridging, ANegativeOrInfiniteLimitIsRefused) {
     SkeletonParameters p;
     for (double bad : {-1.0, std::numeric_limits<double>::infinity()}) {
-        p.thinning.gapLimit = bad;
-        EXPECT_THROW(checkThinningParameters(p.thinning), InvalidInput) << bad;
+        p.graph.gapLimit = bad;
+        EXPECT_THROW(checkSkeletonGraphParameters(p.graph), InvalidInput) << bad;
     }
 }

@@ -1,5 +1,5 @@
 // Refinement on hand-made graphs whose flaws are known, and on a clean ring.
-#include <pcskeleton/analysis/skeleton_refinement.h>
+#include <pcskeleton/finishing/skeleton_refinement.h>
 #include "support/hand_made_graphs.h"
 #include "support/sampled_shapes.h"
 
@@ -213,7 +213,7 @@ TEST(SkeletonRefinement, CutsABoneAcrossAGapButNotARealBar) {
     const std::vector<std::pair<double, double>> kept{{0.8, 1.15}, {0.04, 1.15}, {0.6, 0.0}, {0.6, 1.5}};
     for (const auto& [endRadius, stretch] : kept) {
         SkeletonGraph g = ringWithBoneAcross(endRadius);
-        NarrowLoopLimits limits;
+        RefinementLimits limits;
         limits.gapStretch = stretch;
         EXPECT_EQ(refineSkeleton(g, {}, kSpacing, limits).bridgesCut, 0) << endRadius << ", " << stretch;
         EXPECT_EQ(analyseTopology(g).cycles, 2) << endRadius << ", " << stretch;
@@ -295,7 +295,7 @@ TEST(SkeletonRefinement, KeepsANarrowHoleTheSurfaceGoesRound) {
 
 TEST(SkeletonRefinement, NoLoopIsOpenedWithAnOpeningOfZero) {
     auto [g, points] = narrowLoopWithPoints(true);
-    const RefinementReport report = refineSkeleton(g, points, kSpacing, NarrowLoopLimits{0.0, 0.35});
+    const RefinementReport report = refineSkeleton(g, points, kSpacing, RefinementLimits{0.0, 0.35});
     EXPECT_EQ(report.cyclesCut, 0) << describe(report);
     EXPECT_EQ(analyseTopology(g).cycles, 1);
 }

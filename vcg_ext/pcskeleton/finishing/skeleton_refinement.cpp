@@ -1,4 +1,4 @@
-#include "pcskeleton/analysis/skeleton_refinement.h"
+#include "pcskeleton/finishing/skeleton_refinement.h"
 
 #include "pcskeleton/internal/counted.h"
 #include "pcskeleton/internal/disjoint_sets.h"
@@ -97,7 +97,7 @@ void eraseBone(SkeletonGraph& skeleton, Edge bone) {
 // loops thinning gave: after a cut the basis may pair what is left of a loop with a
 // neighbouring one and measure the two as one narrow loop (the paper's
 // misaligned_scans_0.015 lost a real hole of Fertility that way).
-int cutContactLoops(SkeletonGraph& skeleton, const PointList& points, const NarrowLoopLimits& limits) {
+int cutContactLoops(SkeletonGraph& skeleton, const PointList& points, const RefinementLimits& limits) {
     normalizeEdges(skeleton.edges);  // sorted, for the searches below
     int cuts = 0;
     for (const ContactLoop& loop : contactLoops(skeleton, points, limits)) {
@@ -161,7 +161,7 @@ std::string describe(const RefinementReport& r) {
 }
 
 RefinementReport refineSkeleton(SkeletonGraph& skeleton, const PointList& points, double nodeSpacing,
-                                const NarrowLoopLimits& narrowLoops) {
+                                const RefinementLimits& refinementLimits) {
     RefinementReport report;
     report.nodeMap.resize(skeleton.nodeCount());
     std::iota(report.nodeMap.begin(), report.nodeMap.end(), 0);
@@ -174,9 +174,9 @@ RefinementReport refineSkeleton(SkeletonGraph& skeleton, const PointList& points
         const int spurs = merge(spurGroups(skeleton, points, nodeSpacing));
         const int ends = merge(stragglingEndGroups(skeleton, nodeSpacing));
         const int cycles = merge(spuriousCycleGroups(skeleton, nodeSpacing));
-        const int cuts = pass == 0 ? cutContactLoops(skeleton, points, narrowLoops) : 0;
+        const int cuts = pass == 0 ? cutContactLoops(skeleton, points, refinementLimits) : 0;
         // Two statements: the bones go first, and the operands of + have no set order.
-        const int gapBones = cutBonesAcrossGaps(skeleton, nodeSpacing, narrowLoops.gapStretch);
+        const int gapBones = cutBonesAcrossGaps(skeleton, nodeSpacing, refinementLimits.gapStretch);
         const int bridges = gapBones + merge(strayBridgeGroups(skeleton));
         const int junctions = merge(closeJunctionGroups(skeleton, nodeSpacing));
         report.spursRemoved += spurs;

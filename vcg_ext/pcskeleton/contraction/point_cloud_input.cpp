@@ -1,4 +1,4 @@
-#include "pcskeleton/core/point_cloud_input.h"
+#include "pcskeleton/contraction/point_cloud_input.h"
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
@@ -171,12 +171,6 @@ void rejectUnrepresentableScale(const PointList& points, const std::string& what
             << " down to which squared distances can be told apart: scale the cloud up.";
         throw InvalidInput(msg.str());
     }
-}
-
-Eigen::AlignedBox3d boundingBox(const PointList& points) {
-    Eigen::AlignedBox3d box;
-    for (const Point& p : points) box.extend(p);
-    return box;
 }
 
 NormalizedCloud normalizeCloud(const PointList& input, std::size_t minimumUniquePoints,

@@ -15,10 +15,10 @@
 
 #include "pcskeleton/contraction/laplacian_contraction.h"
 #include "pcskeleton/skeleton/skeleton_graph.h"
-#include "pcskeleton/analysis/node_recentering.h"
-#include "pcskeleton/analysis/gap_bridging.h"
-#include "pcskeleton/analysis/skeleton_refinement.h"
-#include "pcskeleton/analysis/tip_extension.h"
+#include "pcskeleton/finishing/node_recentering.h"
+#include "pcskeleton/finishing/gap_bridging.h"
+#include "pcskeleton/finishing/skeleton_refinement.h"
+#include "pcskeleton/finishing/tip_extension.h"
 #include "pcskeleton/core/advice.h"
 
 #include <string>

@@ -1,4 +1,4 @@
-#include "pcskeleton/core/outlier_detection.h"
+#include "pcskeleton/contraction/outlier_detection.h"
 
 #include "pcskeleton/core/errors.h"
 

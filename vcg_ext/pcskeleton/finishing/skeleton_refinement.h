@@ -1,6 +1,6 @@
 // Refinement of a computed skeleton, in the spirit of the authors' own post-processing:
 // the small artefacts noise leaves are removed. Not the paper's step; on by default
-// (ThinningParameters::refine says why). Criteria: see skeleton_structure.h.
+// (SkeletonGraphParameters::refine says why). Criteria: see skeleton_structure.h.
 //
 // 1. Spurs and redundant limbs are absorbed into the junction they sprout from (which
 //    keeps its place).
@@ -44,6 +44,6 @@ std::string describe(const RefinementReport& report);
 // `nodeSpacing` is the thinning radius, in the skeleton's units; `points` its input points
 // (graph.pointNode's), or empty to keep redundant limbs and narrow loops.
 RefinementReport refineSkeleton(SkeletonGraph& skeleton, const PointList& points, double nodeSpacing,
-                                const NarrowLoopLimits& narrowLoops = {});
+                                const RefinementLimits& refinementLimits = {});
 
 }  // namespace pcskeleton

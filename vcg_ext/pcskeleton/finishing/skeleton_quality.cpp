@@ -1,4 +1,4 @@
-#include "pcskeleton/analysis/skeleton_quality.h"
+#include "pcskeleton/finishing/skeleton_quality.h"
 
 #include "pcskeleton/internal/counted.h"
 #include "pcskeleton/internal/disjoint_sets.h"

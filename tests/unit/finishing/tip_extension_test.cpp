@@ -1,5 +1,5 @@
 // Tip extension: a capped tube's skeleton reaches its ends; loops and spurs stay as they are.
-#include <pcskeleton/analysis/tip_extension.h>
+#include <pcskeleton/finishing/tip_extension.h>
 #include <pcskeleton/curve_skeleton.h>
 #include "support/hand_made_graphs.h"
 #include "support/sampled_shapes.h"
@@ -35,7 +35,7 @@ TipEnds tipEnds(const SkeletonGraph& g) {
 TEST(TipExtension, ReachesTheEndsOfACappedTube) {
     const PointList cloud = shapes::cylinder(6000, 0.1, 1.0, /*capped=*/true);
     SkeletonParameters paper;
-    paper.thinning.extendTips = false;
+    paper.graph.extendTips = false;
     const SkeletonResult short_ = computeCurveSkeleton(cloud, paper);
     const SkeletonResult extended = computeCurveSkeleton(cloud);
     ASSERT_EQ(analyseTopology(short_.skeleton).tips, 2);

@@ -1,4 +1,4 @@
-#include "pcskeleton/analysis/gap_bridging.h"
+#include "pcskeleton/finishing/gap_bridging.h"
 
 #include "pcskeleton/internal/disjoint_sets.h"
 #include "pcskeleton/skeleton/skeleton_structure.h"

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "pcskeleton/core/errors.h"
-#include "pcskeleton/core/outlier_detection.h"
+#include "pcskeleton/contraction/outlier_detection.h"
 #include "pcskeleton/core/point.h"
 
 #include <Eigen/Core>
@@ -55,9 +55,6 @@ PointList distinctPoints(const PointList& points, const ExactDuplicates& duplica
 // distances of its coordinates must be representable as doubles (no overflow to infinity,
 // no underflow to zero).
 void rejectUnrepresentableScale(const PointList& points, const std::string& what);
-
-// The axis-aligned box holding the points (empty for no points).
-Eigen::AlignedBox3d boundingBox(const PointList& points);
 
 // Validates, sets outliers aside (see outlier_detection.h) and normalises the rest (so the
 // frame, and every length relative to it, follows the surface, not the outliers). Throws

@@ -1,4 +1,4 @@
-#include "pcskeleton/analysis/tip_extension.h"
+#include "pcskeleton/finishing/tip_extension.h"
 
 #include "pcskeleton/skeleton/skeleton_structure.h"
 

@@ -1,4 +1,4 @@
-#include "pcskeleton/analysis/node_recentering.h"
+#include "pcskeleton/finishing/node_recentering.h"
 
 #include <Eigen/Dense>
 

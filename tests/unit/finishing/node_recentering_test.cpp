@@ -1,6 +1,6 @@
 // Re-centring: nodes of a half tube (one view) move onto its axis; nodes whose points
 // surround them stay at their centre.
-#include <pcskeleton/analysis/node_recentering.h>
+#include <pcskeleton/finishing/node_recentering.h>
 #include <pcskeleton/curve_skeleton.h>
 #include "support/sampled_shapes.h"
 
@@ -72,7 +72,7 @@ TEST(NodeRecentering, AOneViewScanOfATubeGivesItsAxis) {
         return sum / along / diagonal;
     };
     SkeletonParameters off;
-    off.thinning.recentre = false;
+    off.graph.recentre = false;
     const SkeletonResult centroids = computeCurveSkeleton(half, off);
     const SkeletonResult recentred = computeCurveSkeleton(half);
     EXPECT_GT(meanAxisDistance(centroids.skeleton), 0.04) << "the paper's nodes sit on the visible wall";
