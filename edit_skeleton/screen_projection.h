@@ -3,7 +3,7 @@
 // the screen. No OpenGL calls here, so it is tested without a window.
 #pragma once
 
-#include <pcskeleton/core/point_cloud_input.h>
+#include <pcskeleton/contraction/point_cloud_input.h>
 
 #include <Eigen/Core>
 

@@ -5,6 +5,7 @@
 #include <meshlab_layers/skeleton_layer.h>
 
 #include <pcskeleton/curve_skeleton.h>
+#include <pcskeleton/parameter_settings.h>
 #include <pcskeleton/editing/skeleton_editing.h>
 #include <pcskeleton/io/input_file.h>
 #include <pcskeleton/io/skeleton_io.h>
@@ -32,200 +33,79 @@ const char* const kEditHelp =
     "Select by Vertex Quality to pick nodes by radius. The same edits, with undo, are in the Edit Skeleton "
     "tool.";
 
-const char* const kNeighbourHelp =
-    "Number of nearest neighbours whose tangent-plane Delaunay triangulation gives each point its 1-ring. "
-    "0 = automatic: 1.2% of the points, between 8 and 30 (the paper's rule). Raise it for noisy scans; "
-    "lower it if close-by parts (fingers, claws) get connected.";
+using pcskeleton::ParameterInfo;
+using pcskeleton::Stage;
+using pcskeleton::ValueType;
 
-// Which points the contraction works on (outliers set aside, a denoised copy): the
-// contraction and the skeleton filters ask for them, and the thinning filter must repeat
-// them to rebuild the contraction's 1-rings.
-void addInputCleaningParameters(RichParameterList& list) {
-    list.addParam(RichBool("detectOutliers", pcskeleton::OutlierParameters().detect,
-        parameterLabel(Parameter::OutlierDetection),
-        "Sets aside, before the 1-rings, points that do not belong to the sampled surface: isolated points and "
-        "small sparse clusters, judged against the cloud's own point spacing. They get no node (grey in the "
-        "segments layer) and are counted in the log; the layer itself is not changed. Untick to keep every "
-        "point, as the paper does."));
-    list.addParam(RichInt("denoisePasses", pcskeleton::ContractionParameters().denoisingPasses,
-        parameterLabel(Parameter::DenoisingPasses),
-        "The 1-rings and the contraction use a copy of the points denoised by this many passes of projection "
-        "onto the plane of each point's k nearest neighbours; the nodes and radii still come from the points as "
-        "they are. Noise and misaligned scans then leave far fewer spurs and false loops. -1 = automatic: "
-        + QString::number(pcskeleton::kPassesForNoisySurface) + " passes if the cloud is noisy (surface noise above "
-        + QString::number(pcskeleton::kNoisySurface) + ", given in the log), none if it is clean; 0 = never, as "
-        "the paper; 1 to " + QString::number(pcskeleton::kMaximumDenoisingPasses) + " passes always."));
+// The stages whose parameters each filter's dialog shows.
+const std::vector<Stage> kContractionStages = {Stage::Contraction, Stage::PointCleaning};
+const std::vector<Stage> kSkeletonStages = {Stage::Contraction, Stage::PointCleaning, Stage::Resolution,
+                                            Stage::Thinning};
+const std::vector<Stage> kThinningStages = {Stage::PointCleaning, Stage::Thinning};
+const std::vector<Stage> kReconstructionStages = {Stage::Reconstruction};
+
+bool inStages(const ParameterInfo& p, const std::vector<Stage>& stages) {
+    return std::find(stages.begin(), stages.end(), p.stage) != stages.end();
 }
 
-void readInputCleaning(const RichParameterList& list, pcskeleton::ContractionParameters& p) {
-    p.outliers.detect = list.getBool("detectOutliers");
-    p.denoisingPasses = list.getInt("denoisePasses");
+// A dialog field shows a switch the way its label reads ("Detect outliers"), the table's
+// value the way its name reads ("keep_outliers").
+bool fieldValueOfSwitch(const ParameterInfo& p, double value) { return (value != 0) != p.inverted; }
+
+// The maximum W_L is a whole number in an integer field: MeshLab's float fields show 3
+// digits and would read 2048 back as 2050 on Apply.
+bool shownAsInteger(const ParameterInfo& p) {
+    return p.type == ValueType::Integer || p.id == Parameter::MaxContractionWeight;
 }
 
-void addContractionParameters(RichParameterList& list) {
-    const pcskeleton::ContractionParameters d;
-    list.addParam(RichInt("k", d.neighbourCount, parameterLabel(Parameter::NeighbourCount), kNeighbourHelp));
-    list.addParam(RichFloat("contractionWeight", float(d.initialContractionWeight),
-        parameterLabel(Parameter::InitialContractionWeight),
-        "Strength of the Laplacian (shrinking) term in the first iteration, in the normalised frame where the "
-        "cloud's longest side is 1.6. 0 = automatic: 1/(5 S0), S0 being the mean 1-ring size. Too high pulls thin "
-        "parts into thick ones (paper Fig. 4d); too low lets tips stick out of the shape (Fig. 4a)."));
-    list.addParam(RichFloat("attractionWeight", float(d.initialAttractionWeight),
-        parameterLabel(Parameter::InitialAttractionWeight),
-        "How strongly points are held at their positions. Acts opposite to W_L0 (paper Fig. 4e-h)."));
-    list.addParam(RichFloat("contractionScale", float(d.contractionScale), parameterLabel(Parameter::ContractionScale),
-        "W_L is multiplied by this after every iteration. The paper uses 3; use 2 for shapes with thin parts "
-        "between thick ones (paper Fig. 10), at the cost of an extra iteration."));
-    // An integer on purpose: MeshLab's dialog shows floats with 3 digits, and would read
-    // 2048 back as 2050 on Apply.
-    list.addParam(RichInt("maxContractionWeight", int(d.maxContractionWeight),
-        parameterLabel(Parameter::MaxContractionWeight),
-        "Upper limit of the contraction weight, for numerical stability."));
-    list.addParam(RichFloat("maxAttractionWeight", float(d.maxAttractionWeight),
-        parameterLabel(Parameter::MaxAttractionWeight),
-        "Upper limit of a point's attraction weight (it grows as the point's 1-ring shrinks)."));
-    list.addParam(RichFloat("laplacianRowLimit", float(d.laplacianRowLimit),
-        parameterLabel(Parameter::LaplacianRowLimit),
-        "A Laplacian row whose weights add up to more than this is scaled down; guards against the huge "
-        "cotangents of nearly flat 1-ring triangles."));
-    list.addParam(RichInt("maxIterations", d.maxIterations, parameterLabel(Parameter::MaxIterations),
-        "Contraction stops after this many iterations at the latest (most models converge in under 5)."));
-    list.addParam(RichFloat("terminationThreshold", float(d.terminationThreshold),
-        parameterLabel(Parameter::TerminationThreshold),
-        "Contraction stops when the total 1-ring size shrank by less than this fraction of its initial value "
-        "in the last iteration."));
-    addInputCleaningParameters(list);
+// One field per parameter of `stages` (the table's label and help), with `advanced` ones
+// only or common ones only: the common ones come first, the advanced ones last, behind
+// MeshLab's advanced toggle where it has one.
+void addParameterField(RichParameterList& list, const ParameterInfo& p, const QString& extraHelp = {}) {
+    const double value = pcskeleton::defaultValue(p.id);
+    const QString name = p.meshlabName, label = p.label, help = QString(p.help) + extraHelp;
+    if (p.type == ValueType::Switch) {
+        list.addParam(richParameter<RichBool>(name, fieldValueOfSwitch(p, value), label, help, p.advanced));
+    } else if (shownAsInteger(p)) {
+        list.addParam(richParameter<RichInt>(name, int(value), label, help, p.advanced));
+    } else {
+        list.addParam(richParameter<RichFloat>(name, float(value), label, help, p.advanced));
+    }
 }
 
-pcskeleton::ContractionParameters readContractionParameters(const RichParameterList& list) {
-    pcskeleton::ContractionParameters p;
-    p.neighbourCount = list.getInt("k");
-    p.initialContractionWeight = list.getFloat("contractionWeight");
-    p.initialAttractionWeight = list.getFloat("attractionWeight");
-    p.contractionScale = list.getFloat("contractionScale");
-    p.maxContractionWeight = list.getInt("maxContractionWeight");
-    p.maxAttractionWeight = list.getFloat("maxAttractionWeight");
-    p.laplacianRowLimit = list.getFloat("laplacianRowLimit");
-    p.maxIterations = list.getInt("maxIterations");
-    p.terminationThreshold = list.getFloat("terminationThreshold");
-    readInputCleaning(list, p);
-    return p;
+void addParameterFields(RichParameterList& list, const std::vector<Stage>& stages, bool advanced) {
+    for (const ParameterInfo& p : pcskeleton::parameterTable()) {
+        if (inStages(p, stages) && p.advanced == advanced && p.meshlabName) addParameterField(list, p);
+    }
 }
 
-void addThinningParameters(RichParameterList& list) {
-    const pcskeleton::ThinningParameters d;
-    list.addParam(RichFloat("sampleRadius", float(d.sampleRadius), parameterLabel(Parameter::NodeSpacing),
-        "Radius of the balls that sample the contracted points into skeleton nodes, as a fraction of the "
-        "bounding-box diagonal (the paper's 0.02). Larger: fewer nodes, and parts or holes closer than this "
-        "merge; smaller: more nodes, and noise may survive as short spurs or tiny loops."));
-    list.addParam(RichFloat("linkLimit", float(d.linkLimit), parameterLabel(Parameter::LinkLimit),
-        "Neighbouring points whose contracted positions ended more than this many node spacings apart were "
-        "pulled to different bones (parts that touch, noise across a gap): they connect their nodes only where "
-        "nothing else does, so they close no false loop. Lower it if close parts still get false loops; 0 lets "
-        "every neighbour pair connect, as in the paper."));
-    list.addParam(RichFloat("gapLimit", float(d.gapLimit), parameterLabel(Parameter::GapLimit),
-        "Where the data has a gap across a limb (an occluded stretch of a scan, a missing patch), the skeleton "
-        "comes out in pieces. A limb pointing at another piece at most this many node spacings ahead is joined "
-        "to it by a bone. Pieces that lie side by side are never joined. Raise it for wider gaps, lower it if "
-        "separate objects get joined; 0 joins nothing, as in the paper."));
-    list.addParam(RichBool("extendTips", d.extendTips, "Extend tips to the shape's ends",
-        "Contraction pulls the ends of limbs inwards, so the skeleton stops short of them. This extends every "
-        "limb (not the short spurs) along its direction to where its tip's points end (where their density "
-        "along it falls), with a new end node. "
-        "Turn it off to get the paper's skeleton exactly."));
-    list.addParam(RichBool("recentre", d.recentre, "Re-centre nodes of one-sided parts",
-        "Where a node's points cover one side of its bone only (a scan from one side, a hole), their centre lies "
-        "on the visible wall: the node moves to the centre of the circle through them, with that circle's "
-        "radius. Nodes whose points surround them stay at their centre, as in the paper."));
-    list.addParam(RichBool("refine", d.refine, parameterLabel(Parameter::Refinement),
-        "Cleans what noise leaves: limbs shorter than the body is thick where they join are absorbed into the "
-        "junction, loops smaller than the tube around them collapse to a node, junctions closer than the node "
-        "spacing merge, bridges of a handful of points (or a single bone across a gap) between parts that pass "
-        "close are cut. On by default: on "
-        "noisy and misaligned scans it removes spurs and false loops. Untick "
-        "for the paper's skeleton."));
-    list.addParam(RichFloat("loopOpening", float(d.narrowLoops.minOpening), parameterLabel(Parameter::LoopOpening),
-        "Refinement opens a loop whose hole is narrower than this many tube radii at its bone longest for its "
-        "radii, if that bone passes closer than the clearance below to a point: parts that touch, or that noise "
-        "joined. Lower it if a real narrow hole is lost; 0 opens none."));
-    list.addParam(RichFloat("loopClearance", float(d.narrowLoops.minClearance), parameterLabel(Parameter::LoopClearance),
-        "The fraction of its radius within which that bone must pass a point for the loop to be opened: a bone "
-        "inside a tube keeps about a radius from its wall. Lower it if a real narrow hole is lost."));
+// The settings a dialog (or an .mlx script) gives: the defaults, or the paper's pipeline
+// first, then every field of the table changed from its default.
+pcskeleton::Settings settingsOf(const RichParameterList& list, bool paper = false) {
+    std::vector<std::pair<Parameter, double>> changed;
+    for (const ParameterInfo& p : pcskeleton::parameterTable()) {
+        if (!p.meshlabName || !list.hasParameter(p.meshlabName)) continue;
+        const double fallback = pcskeleton::defaultValue(p.id);
+        double value = 0, shownDefault = 0;
+        if (p.type == ValueType::Switch) {
+            value = list.getBool(p.meshlabName) != p.inverted ? 1.0 : 0.0;
+            shownDefault = fallback;
+        } else if (shownAsInteger(p)) {
+            value = list.getInt(p.meshlabName);
+            shownDefault = double(int(fallback));
+        } else {
+            value = list.getFloat(p.meshlabName);
+            shownDefault = double(float(fallback));
+        }
+        if (value != shownDefault) changed.emplace_back(p.id, value);
+    }
+    return pcskeleton::settingsFrom(paper, changed);
+}
+
+void addSegmentsLayerField(RichParameterList& list) {
     list.addParam(RichBool("addSegmentsLayer", true, "Add a layer of points coloured by node",
-        "Adds a copy of the input points, each coloured by the skeleton node it belongs to (the "
-        "correspondence), with the node index in the per-vertex attribute pcs_node. The input layer is "
-        "not changed."));
-}
-
-// What the thinning filter needs to know of the contraction that made its layer.
-pcskeleton::ContractionParameters contractionOfThinning(const RichParameterList& list) {
-    pcskeleton::ContractionParameters p;
-    p.neighbourCount = list.getInt("k");
-    readInputCleaning(list, p);
-    return p;
-}
-
-pcskeleton::ThinningParameters readThinningParameters(const RichParameterList& list) {
-    pcskeleton::ThinningParameters p;
-    p.sampleRadius = list.getFloat("sampleRadius");
-    p.linkLimit = list.getFloat("linkLimit");
-    p.gapLimit = list.getFloat("gapLimit");
-    p.extendTips = list.getBool("extendTips");
-    p.recentre = list.getBool("recentre");
-    p.refine = list.getBool("refine");
-    p.narrowLoops.minOpening = list.getFloat("loopOpening");
-    p.narrowLoops.minClearance = list.getFloat("loopClearance");
-    return p;
-}
-
-void addReconstructionParameters(RichParameterList& list) {
-    const pcskeleton::ReconstructionParameters d;
-    list.addParam(RichInt("resolution", d.resolution, parameterLabel(Parameter::Resolution),
-        QString("Grid cells along the longest side (%1 to %2). Finer shows more detail; memory and time "
-                "grow with its cube (about 1 GB and 10 s at 256 for a ring-shaped object).")
-            .arg(pcskeleton::kMinimumResolution).arg(pcskeleton::kMaximumResolution)));
-    list.addParam(RichFloat("smoothWeight", float(d.smoothWeight), parameterLabel(Parameter::SmoothWeight),
-        "Weight of the field's smoothness (the integral of its squared Laplacian). Raise it for noisy "
-        "scans; lower it to follow the points more closely."));
-    list.addParam(RichFloat("surfaceWeight", float(d.surfaceWeight), parameterLabel(Parameter::SurfaceWeight),
-        "How strongly the surface passes through the points (field 0 there)."));
-    list.addParam(RichFloat("skeletonWeight", float(d.skeletonWeight), parameterLabel(Parameter::SkeletonWeight),
-        "How strongly the field equals minus the node radius along the bones. Raise it if the surface "
-        "does not bridge a gap the skeleton crosses; the radius sets how thick the bridge is."));
-    list.addParam(RichFloat("outsideWeight", float(d.outsideWeight), parameterLabel(Parameter::OutsideWeight),
-        "How strongly the field is positive far from the skeleton (a weak hint, the paper's 0.005). Raise "
-        "it if the surface bulges into empty space or closes holes the skeleton leaves open."));
-    list.addParam(RichFloat("outsideRadii", float(d.outsideRadii), parameterLabel(Parameter::OutsideDistance),
-        "Space farther than K node radii from the skeleton counts as outside the shape (the paper's 4). "
-        "Lower it to keep gaps open next to thin parts."));
-    list.addParam(RichBool("keepSkeletonTopology", d.keepSkeletonTopology, parameterLabel(Parameter::SkeletonTopology),
-        "The surface gets exactly the skeleton's topology: one closed part per skeleton part and one handle per "
-        "loop. Handles, bridges and islands that the points suggest but the skeleton does not have (noise, "
-        "close parts touching) are cut away, and the log says where the largest cut was. Untick for the paper's "
-        "plain fit, whose surface may have any topology the points suggest."));
-    list.addParam(RichBool("adaptToNoise", d.adaptToNoise, "Weigh noisy points less",
-        "Points whose neighbours scatter across the surface by more than a grid cell (scan noise) weigh less in "
-        "the fit, so the surface passes through their middle instead of following each bump. Clean parts are "
-        "not changed. Untick for the paper's fit, where every point weighs the surface weight w2."));
-    list.addParam(RichBool("fitVerticesToPoints", d.fitVerticesToPoints, "Fit the surface to the points",
-        "Where there are points, each vertex of the surface moves (by at most a grid cell) onto a smooth local fit "
-        "of its nearest points: the field's smoothness rounds thin parts inward by a fraction of a cell, the local "
-        "fit does not. Triangles do not change, so neither does the topology. Untick for the field's zero level "
-        "set as it is (the paper's)."));
-}
-
-pcskeleton::ReconstructionParameters readReconstructionParameters(const RichParameterList& list) {
-    pcskeleton::ReconstructionParameters p;
-    p.resolution = list.getInt("resolution");
-    p.smoothWeight = list.getFloat("smoothWeight");
-    p.surfaceWeight = list.getFloat("surfaceWeight");
-    p.skeletonWeight = list.getFloat("skeletonWeight");
-    p.outsideWeight = list.getFloat("outsideWeight");
-    p.outsideRadii = list.getFloat("outsideRadii");
-    p.keepSkeletonTopology = list.getBool("keepSkeletonTopology");
-    p.adaptToNoise = list.getBool("adaptToNoise");
-    p.fitVerticesToPoints = list.getBool("fitVerticesToPoints");
-    return p;
+        "Adds a copy of the input points, each coloured by the skeleton node it belongs to (the correspondence), "
+        "with the node index in the per-vertex attribute pcs_node. The input layer is not changed."));
 }
 
 pcskeleton::ProgressCallback progressOf(vcg::CallBackPos* cb) {
@@ -421,35 +301,35 @@ bool FilterPCSkeletonPlugin::applyFilter(QAction* action, MeshDocument& md, cons
 void FilterPCSkeletonPlugin::addParameters(int filter, MeshDocument& md, RichParameterList& parameters) {
     switch (filter) {
         case FP_CONTRACT_POINT_CLOUD:
-            addContractionParameters(parameters);
-            parameters.addParam(RichInt("iterationsToRun", 0, "Iterations to run",
+            addParameterFields(parameters, kContractionStages, false);
+            parameters.addParam(RichInt("iterationsToRun", 0, "Iterations to run (0 = all)",
                 "Run at most this many iterations, to watch the cloud contract step by step "
                 "(0 = until contraction stops)."));
             parameters.addParam(RichBool("keepEveryIteration", false, "One layer per iteration",
                 "Add a layer after every iteration instead of only the final one."));
+            addParameterFields(parameters, kContractionStages, true);
             break;
         case FP_COMPUTE_SKELETON:
-            addContractionParameters(parameters);
-            addThinningParameters(parameters);
+            addParameterFields(parameters, kSkeletonStages, false);
+            addSegmentsLayerField(parameters);
             parameters.addParam(RichBool("addContractedLayer", false, "Add the contracted points layer",
                 "Also adds the contracted points as a layer, e.g. to thin them again later with other settings "
                 "(Skeleton from Contracted Points)."));
-            parameters.addParam(RichBool("fullResolution", false, "Full resolution",
-                QString("Contract every point. By default a layer of more than %1 points is contracted through a "
-                        "well-spread subsample of %1 (one per cube of a grid), which takes seconds instead of minutes "
-                        "at a million points and needs far less memory; every point still gets its node, and the "
-                        "radii come from all points.").arg(pcskeleton::ResolutionParameters{}.maxContractedPoints)));
-            parameters.addParam(RichBool("paperPipeline", false, "The paper's pipeline only",
-                "Exactly the paper's steps: no outlier detection, denoising, re-centring, refinement, tip "
-                "extension, stretched-link limit or subsample, whatever is set above. For comparison with the paper and other implementations of it."));
+            parameters.addParam(RichBool("paperPipeline", false, "The paper's pipeline, then my changes",
+                "The paper's steps only: no outlier detection, denoising, re-centring, refinement, tip extension, "
+                "gap bridging, stretched-link limit or subsample; then every field changed from its default "
+                "applies on top (tick Refine too for the paper plus refinement). For comparison with the paper "
+                "and other implementations of it."));
+            addParameterFields(parameters, kSkeletonStages, true);
             break;
         case FP_SKELETON_FROM_CONTRACTED:
             parameters.addParam(layerParameter("sourceLayer", likelySourceOf(md, md.mm()), md, "Original points",
                 "The layer that was contracted: its points give the 1-rings, the node positions and the radii."));
-            parameters.addParam(RichInt("k", 0, parameterLabel(Parameter::NeighbourCount),
-                QString(kNeighbourHelp) + " Use the value the contraction used."));
-            addInputCleaningParameters(parameters);
-            addThinningParameters(parameters);
+            addParameterField(parameters, pcskeleton::parameterInfo(Parameter::NeighbourCount),
+                " Use the value the contraction used.");
+            addParameterFields(parameters, kThinningStages, false);
+            addSegmentsLayerField(parameters);
+            addParameterFields(parameters, kThinningStages, true);
             break;
         case FP_EXPORT_SKELETON: {
             parameters.addParam(FileSaveParameter("fileName", defaultSkeletonFileName(md),
@@ -473,7 +353,8 @@ void FilterPCSkeletonPlugin::addParameters(int filter, MeshDocument& md, RichPar
             parameters.addParam(layerParameter("skeletonLayer", defaultSkeletonLayer(md), md, "Skeleton",
                 "The curve skeleton of these points, edited or not: its bones and node radii say where the inside "
                 "is, and its loops become the surface's handles."));
-            addReconstructionParameters(parameters);
+            addParameterFields(parameters, kReconstructionStages, false);
+            addParameterFields(parameters, kReconstructionStages, true);
             break;
         }
     }
@@ -547,7 +428,10 @@ bool FilterPCSkeletonPlugin::contractPointCloud(MeshDocument& md, const RichPara
                                                 vcg::CallBackPos* cb) {
     MeshModel& source = *md.mm();
     const LayerPoints input = collectPoints(source);
-    const pcskeleton::ContractionParameters settings = readContractionParameters(parameters);
+    // Every point is contracted: the new layer has one point per vertex of the input.
+    pcskeleton::SkeletonParameters pipelineParameters = settingsOf(parameters).skeleton;
+    pipelineParameters.resolution.maxContractedPoints = 0;
+    const pcskeleton::ContractionParameters& settings = pipelineParameters.contraction;
     const int iterationsToRun = parameters.getInt("iterationsToRun");
     const bool keepEveryIteration = parameters.getBool("keepEveryIteration");
     if (iterationsToRun < 0) {
@@ -555,7 +439,8 @@ bool FilterPCSkeletonPlugin::contractPointCloud(MeshDocument& md, const RichPara
         return false;
     }
     const pcskeleton::ProgressCallback progress = progressOf(cb);
-    pcskeleton::LaplacianContraction contraction(input.points, settings, pcskeleton::progressRange(progress, 0, 30));
+    pcskeleton::SkeletonPipeline pipeline(input.points, pipelineParameters, pcskeleton::progressRange(progress, 0, 30));
+    pcskeleton::LaplacianContraction& contraction = pipeline.contraction();
     logContractionStart(source, contraction, input.points.size());
 
     const int limit = iterationsToRun > 0 ? std::min(iterationsToRun, settings.maxIterations) : settings.maxIterations;
@@ -596,30 +481,24 @@ bool FilterPCSkeletonPlugin::computeSkeleton(MeshDocument& md, const RichParamet
                                              vcg::CallBackPos* cb) {
     MeshModel& source = *md.mm();
     const LayerPoints input = collectPoints(source);
-    pcskeleton::SkeletonParameters pipeline{readContractionParameters(parameters), readThinningParameters(parameters), {}};
-    if (parameters.getBool("fullResolution")) pipeline.resolution.maxContractedPoints = 0;
-    if (parameters.getBool("paperPipeline")) pipeline.keepToThePaper();
-    const pcskeleton::ContractionParameters& settings = pipeline.contraction;
-    const pcskeleton::ThinningParameters& thinning = pipeline.thinning;
+    const pcskeleton::SkeletonParameters pipelineParameters =
+        settingsOf(parameters, parameters.getBool("paperPipeline")).skeleton;
+    const pcskeleton::ContractionParameters& settings = pipelineParameters.contraction;
     const pcskeleton::ProgressCallback progress = progressOf(cb);
-    pcskeleton::checkThinningParameters(thinning);  // before the contraction, not after it
-
-    const pcskeleton::ContractionInput work(input.points, pipeline.resolution, settings.outliers,
-                                            pcskeleton::progressRange(progress, 0, 10));
+    pcskeleton::SkeletonPipeline pipeline(input.points, pipelineParameters, pcskeleton::progressRange(progress, 0, 25));
+    const pcskeleton::ContractionInput& work = pipeline.input();
     if (work.subsampled()) {
         writeLog(*this, "Multi-resolution: %zu of the %zu points contracted (one per cube of side %.4g); every point gets the node "
             "of its cube's point.", work.points().size(), input.points.size(), work.subsample().cellSize);
     }
-    pcskeleton::LaplacianContraction contraction(work.points(), settings, pcskeleton::progressRange(progress, 10, 25));
+    pcskeleton::LaplacianContraction& contraction = pipeline.contraction();
     logContractionStart(source, contraction, work.points().size());
     const int done = contract(contraction, settings.maxIterations, [&](int iteration) {
         pcskeleton::report(progress, 25 + 65 * iteration / settings.maxIterations, "Contracting");
     });
     writeLog(*this, "Contraction: %d iteration(s), %s.", done, pcskeleton::describe(contraction.stopReason()).c_str());
 
-    pcskeleton::SkeletonResult result =
-        pcskeleton::skeletonFromContraction(contraction, thinning, pcskeleton::progressRange(progress, 90, 100));
-    work.carryToAllPoints(result);
+    pcskeleton::SkeletonResult result = pipeline.skeleton(pcskeleton::progressRange(progress, 90, 100));
     if (parameters.getBool("addContractedLayer")) {
         addPointLayer(md, source, input, result.contraction.contracted, derivedLabel(source, "contracted"));
     }
@@ -632,8 +511,9 @@ bool FilterPCSkeletonPlugin::skeletonFromContracted(MeshDocument& md, const Rich
     MeshModel* source = layerParameterValue(md, parameters, "sourceLayer");
     LayerPoints input;
     const pcskeleton::PointList contracted = readContractedLayer(*md.mm(), source, input);
+    const pcskeleton::Settings thinning = settingsOf(parameters);
     const pcskeleton::SkeletonResult result = pcskeleton::skeletonFromContractedPoints(
-        input.points, contracted, contractionOfThinning(parameters), readThinningParameters(parameters), progressOf(cb));
+        input.points, contracted, thinning.skeleton.contraction, thinning.skeleton.graph, progressOf(cb));
     addSkeletonLayers(md, *source, input, result, parameters.getBool("addSegmentsLayer"));
     return true;
 }
@@ -725,7 +605,8 @@ bool FilterPCSkeletonPlugin::reconstructFromSkeleton(MeshDocument& md, const Ric
         return false;
     }
     const ReconstructedLayer result =
-        addReconstructionLayer(md, *points, *skeleton, readReconstructionParameters(parameters), progressOf(cb));
+        addReconstructionLayer(md, *points, *skeleton, settingsOf(parameters).reconstruction,
+                               progressOf(cb));
     writeLog(*this, "Reconstruction '%s' from '%s' and '%s':", qUtf8Printable(result.layer->label()),
         qUtf8Printable(points->label()), qUtf8Printable(skeleton->label()));
     logLines(QString::fromStdString(pcskeleton::describeFindings(result.report)), GLLogStream::FILTER);

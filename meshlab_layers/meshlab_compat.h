@@ -48,6 +48,18 @@ using FileSaveParameter = RichFileSave;
 using FileSaveParameter = RichSaveFile;
 #endif
 
+// A dialog field that MeshLab 2021.05 and later show behind their advanced toggle; 2020.09
+// has none, and shows it where it is added (after the common fields).
+template <class Field, class Value>
+Field richParameter(const QString& name, Value value, const QString& label, const QString& help, bool advanced) {
+#if PCSKELETON_MESHLAB_2021_API
+    return Field(name, value, label, help, advanced);
+#else
+    (void)advanced;
+    return Field(name, value, label, help);
+#endif
+}
+
 // Every layer of the document, in MeshLab's order.
 inline std::vector<MeshModel*> layersOf(MeshDocument& md) {
     std::vector<MeshModel*> layers;

@@ -1,6 +1,6 @@
 #include "skeleton_layer.h"
 
-#include <pcskeleton/core/point_cloud_input.h>
+#include <pcskeleton/contraction/point_cloud_input.h>
 
 #include <limits>
 

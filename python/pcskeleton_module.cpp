@@ -2,6 +2,7 @@
 // No algorithm here. The package around it (python/pcskeleton/__init__.py) adds the
 // documentation, the keyword checks' help and the networkx/Open3D conversions.
 #include <pcskeleton/curve_skeleton.h>
+#include <pcskeleton/parameter_settings.h>
 #include <pcskeleton/core/errors.h>
 #include <pcskeleton/editing/skeleton_editing.h>
 #include <pcskeleton/io/mesh_io.h>
@@ -37,39 +38,12 @@ using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecas
 
 // ---- Words: the library's advice names this module's keywords -------------------------
 
+// Each parameter by its keyword; a switch whose keyword says the opposite of its words by
+// the words and the keyword that turns it off ("outlier detection (keep_outliers=True turns it off)").
 std::string keywordOf(Parameter parameter) {
-    switch (parameter) {
-        case Parameter::NeighbourCount: return "k";
-        case Parameter::InitialContractionWeight: return "wl";
-        case Parameter::InitialAttractionWeight: return "wh";
-        case Parameter::ContractionScale: return "sl";
-        case Parameter::MaxContractionWeight: return "max_wl";
-        case Parameter::MaxAttractionWeight: return "max_wh";
-        case Parameter::LaplacianRowLimit: return "row_limit";
-        case Parameter::MaxIterations: return "iterations";
-        case Parameter::TerminationThreshold: return "threshold";
-        case Parameter::NodeSpacing: return "radius";
-        case Parameter::Refinement: return "refine";
-        case Parameter::OutlierDetection: return "outlier detection (keep_outliers=True turns it off)";
-        case Parameter::OutlierIsolation: return "outlier_isolation";
-        case Parameter::OutlierLocalFactor: return "outlier_local";
-        case Parameter::OutlierClusterShare: return "outlier_cluster";
-        case Parameter::DenoisingPasses: return "denoise";
-        case Parameter::LinkLimit: return "link_limit";
-        case Parameter::GapLimit: return "gap_limit";
-        case Parameter::LoopOpening: return "loop_opening";
-        case Parameter::LoopClearance: return "loop_clearance";
-        case Parameter::GapStretch: return "gap_stretch";
-        case Parameter::ContractedPoints: return "contracted_points";
-        case Parameter::Resolution: return "resolution";
-        case Parameter::SmoothWeight: return "smooth_weight";
-        case Parameter::SurfaceWeight: return "surface_weight";
-        case Parameter::SkeletonWeight: return "skeleton_weight";
-        case Parameter::OutsideWeight: return "outside_weight";
-        case Parameter::OutsideDistance: return "outside_radii";
-        case Parameter::SkeletonTopology: return "the topology guarantee (data_topology=True turns it off)";
-    }
-    return libraryTerms().parameter(parameter);
+    const ParameterInfo& p = parameterInfo(parameter);
+    if (p.type == ValueType::Switch && p.inverted) return std::string(p.words) + " (" + p.name + "=True turns it off)";
+    return p.name;
 }
 
 std::string stepInPython(Step step) {
@@ -120,133 +94,88 @@ py::dict problemDict(const Problem& problem) {
     return d;
 }
 
-// ---- Parameters: each keyword is one field of the library's parameter structs ----------
+// ---- Parameters: each keyword is one parameter of the library's table ------------------
 
-struct Settings {
-    SkeletonParameters skeleton;
-    ReconstructionParameters reconstruction;
-};
-
-struct Keyword {
-    std::function<py::object(const Settings&)> get;
-    std::function<void(Settings&, py::handle)> set;
-};
-
-template <class T, class Field>
-Keyword field(Field f) {
-    return {[f](const Settings& s) { return py::cast(f(const_cast<Settings&>(s))); },
-            [f](Settings& s, py::handle v) { f(s) = v.cast<T>(); }};
-}
-// A keyword that is true when the library's flag is off (keep_outliers = !detect, ...).
-template <class Field>
-Keyword inverted(Field f) {
-    return {[f](const Settings& s) { return py::cast(!f(const_cast<Settings&>(s))); },
-            [f](Settings& s, py::handle v) { f(s) = !v.cast<bool>(); }};
-}
-
-const std::map<std::string, Keyword>& skeletonKeywords() {
-    static const std::map<std::string, Keyword> keywords = {
-        {"k", field<int>([](Settings& s) -> int& { return s.skeleton.contraction.neighbourCount; })},
-        {"wl", field<double>([](Settings& s) -> double& { return s.skeleton.contraction.initialContractionWeight; })},
-        {"wh", field<double>([](Settings& s) -> double& { return s.skeleton.contraction.initialAttractionWeight; })},
-        {"sl", field<double>([](Settings& s) -> double& { return s.skeleton.contraction.contractionScale; })},
-        {"max_wl", field<double>([](Settings& s) -> double& { return s.skeleton.contraction.maxContractionWeight; })},
-        {"max_wh", field<double>([](Settings& s) -> double& { return s.skeleton.contraction.maxAttractionWeight; })},
-        {"row_limit", field<double>([](Settings& s) -> double& { return s.skeleton.contraction.laplacianRowLimit; })},
-        {"iterations", field<int>([](Settings& s) -> int& { return s.skeleton.contraction.maxIterations; })},
-        {"threshold", field<double>([](Settings& s) -> double& { return s.skeleton.contraction.terminationThreshold; })},
-        {"denoise", field<int>([](Settings& s) -> int& { return s.skeleton.contraction.denoisingPasses; })},
-        {"keep_outliers", inverted([](Settings& s) -> bool& { return s.skeleton.contraction.outliers.detect; })},
-        {"outlier_isolation",
-         field<double>([](Settings& s) -> double& { return s.skeleton.contraction.outliers.isolationFactor; })},
-        {"outlier_local", field<double>([](Settings& s) -> double& { return s.skeleton.contraction.outliers.localFactor; })},
-        {"outlier_cluster",
-         field<double>([](Settings& s) -> double& { return s.skeleton.contraction.outliers.clusterShare; })},
-        {"radius", field<double>([](Settings& s) -> double& { return s.skeleton.thinning.sampleRadius; })},
-        {"link_limit", field<double>([](Settings& s) -> double& { return s.skeleton.thinning.linkLimit; })},
-        {"gap_limit", field<double>([](Settings& s) -> double& { return s.skeleton.thinning.gapLimit; })},
-        {"loop_opening",
-         field<double>([](Settings& s) -> double& { return s.skeleton.thinning.narrowLoops.minOpening; })},
-        {"loop_clearance",
-         field<double>([](Settings& s) -> double& { return s.skeleton.thinning.narrowLoops.minClearance; })},
-        {"gap_stretch", field<double>([](Settings& s) -> double& { return s.skeleton.thinning.narrowLoops.gapStretch; })},
-        {"extend_tips", field<bool>([](Settings& s) -> bool& { return s.skeleton.thinning.extendTips; })},
-        {"refine", field<bool>([](Settings& s) -> bool& { return s.skeleton.thinning.refine; })},
-        {"recentre", field<bool>([](Settings& s) -> bool& { return s.skeleton.thinning.recentre; })},
-        {"contracted_points",
-         {[](const Settings& s) { return py::cast(s.skeleton.resolution.maxContractedPoints); },
-          [](Settings& s, py::handle v) {
-              const long count = v.cast<long>();
-              if (count < 1)
-                  throw InvalidInput("contracted_points must be at least 1 (full_resolution=True contracts every point).");
-              s.skeleton.resolution.maxContractedPoints = std::size_t(count);
-          }}},
-        {"full_resolution",
-         {[](const Settings& s) { return py::cast(s.skeleton.resolution.maxContractedPoints == 0); },
-          [](Settings& s, py::handle v) {
-              if (v.cast<bool>()) s.skeleton.resolution.maxContractedPoints = 0;
-          }}},
-        {"memory_limit",  // GB, as the CLI's --memory-limit; None = 80% of the machine
-         {[](const Settings& s) {
-              return s.skeleton.resolution.memoryLimit > 0 ? py::cast(s.skeleton.resolution.memoryLimit / 1e9) : py::none();
-          },
-          [](Settings& s, py::handle v) {
-              if (v.is_none()) return;
-              const double gigabytes = v.cast<double>();
-              if (!(gigabytes > 0) || !std::isfinite(gigabytes))
-                  throw InvalidInput("memory_limit must be a positive number of GB.");
-              s.skeleton.resolution.memoryLimit = gigabytes * 1e9;
-          }}},
+// The keyword's value as the table takes it; a TypeError for a value of the wrong type (a
+// float for an integer, anything but a bool for a switch), as in any Python call.
+double keywordValue(const ParameterInfo& p, py::handle value, const char* function) {
+    const auto refuse = [&](const char* type) {
+        return py::type_error(std::string(function) + "(): " + p.name + " must be of type " + type + ", got " +
+                              std::string(py::str(value.get_type().attr("__name__"))));
     };
-    return keywords;
-}
-
-const std::map<std::string, Keyword>& reconstructionKeywords() {
-    static const std::map<std::string, Keyword> keywords = {
-        {"resolution", field<int>([](Settings& s) -> int& { return s.reconstruction.resolution; })},
-        {"smooth_weight", field<double>([](Settings& s) -> double& { return s.reconstruction.smoothWeight; })},
-        {"surface_weight", field<double>([](Settings& s) -> double& { return s.reconstruction.surfaceWeight; })},
-        {"skeleton_weight", field<double>([](Settings& s) -> double& { return s.reconstruction.skeletonWeight; })},
-        {"outside_weight", field<double>([](Settings& s) -> double& { return s.reconstruction.outsideWeight; })},
-        {"outside_radii", field<double>([](Settings& s) -> double& { return s.reconstruction.outsideRadii; })},
-        {"data_topology", inverted([](Settings& s) -> bool& { return s.reconstruction.keepSkeletonTopology; })},
-        {"uniform_point_weights", inverted([](Settings& s) -> bool& { return s.reconstruction.adaptToNoise; })},
-        {"level_set", inverted([](Settings& s) -> bool& { return s.reconstruction.fitVerticesToPoints; })},
-    };
-    return keywords;
-}
-
-// Applies `kwargs` to the library's defaults: `paper=True` first (the paper's pipeline),
-// then every other keyword, so that `paper=True, refine=True` means the paper plus refinement,
-// as `--paper --refine` on the CLI. Unknown keywords are a TypeError, as in any Python call.
-Settings settingsFrom(const py::dict& kwargs, const std::map<std::string, Keyword>& known, const char* function) {
-    Settings s;
-    if (kwargs.contains("paper") && kwargs["paper"].cast<bool>()) {
-        s.skeleton.keepToThePaper();
-        s.reconstruction.keepToThePaper();
+    // As pybind11 casts them (numpy's scalars included), except that a bool is no number and a
+    // float no integer.
+    const bool isBool = py::isinstance<py::bool_>(value);
+    try {
+        switch (p.type) {
+            case ValueType::Switch: return value.cast<bool>() ? 1.0 : 0.0;
+            case ValueType::Integer: {
+                if (isBool || py::isinstance<py::float_>(value)) throw refuse("int");
+                PyObject* index = PyNumber_Index(value.ptr());
+                if (!index) {
+                    PyErr_Clear();
+                    throw refuse("int");
+                }
+                const py::int_ integer = py::reinterpret_steal<py::int_>(index);
+                // Out of int's range: the library's own refusal, not a wrap-around.
+                if (integer > py::int_(std::numeric_limits<int>::max()) || integer < py::int_(std::numeric_limits<int>::min()))
+                    throw InvalidInput(Problem::aboutParameter(p.id, "must be a whole number within int's range."));
+                return double(integer.cast<long long>());
+            }
+            case ValueType::Real:
+                if (isBool || py::isinstance<py::str>(value)) throw refuse("float");
+                return value.cast<double>();
+        }
+    } catch (const py::cast_error&) {
+        throw refuse(p.type == ValueType::Switch ? "bool" : p.type == ValueType::Integer ? "int" : "float");
+    } catch (const py::error_already_set&) {
+        throw refuse(p.type == ValueType::Integer ? "int" : "float");
     }
+    return 0;
+}
+
+// The settings `kwargs` give: `paper=True` first (the paper's pipeline), then every other
+// keyword, as the CLI's --paper and its options. None means "the default". Unknown keywords,
+// and keywords of the other computation's stage, are a TypeError.
+Settings settingsFrom(const py::dict& kwargs, bool reconstruction, const char* function) {
+    bool paper = false;
+    std::vector<std::pair<Parameter, double>> given;
     for (const auto& [key, value] : kwargs) {
         const std::string name = key.cast<std::string>();
-        if (name == "paper") continue;
-        const auto keyword = known.find(name);
-        if (keyword == known.end())
-            throw py::type_error(std::string(function) + "() got an unexpected keyword argument '" + name + "'");
-        try {
-            keyword->second.set(s, value);
-        } catch (const py::cast_error&) {
-            throw py::type_error(std::string(function) + "(): " + name + " must be of type " +
-                                 std::string(py::str(keyword->second.get(Settings{}).get_type().attr("__name__"))) +
-                                 ", got " + std::string(py::str(value.get_type().attr("__name__"))));
+        if (name == "paper") {
+            if (!py::isinstance<py::bool_>(value)) throw py::type_error(std::string(function) + "(): paper must be of type bool");
+            paper = value.cast<bool>();
+            continue;
         }
+        const ParameterInfo* p = parameterNamed(name);
+        if (!p || (p->stage == Stage::Reconstruction) != reconstruction)
+            throw py::type_error(std::string(function) + "() got an unexpected keyword argument '" + name + "'");
+        if (value.is_none()) continue;
+        given.emplace_back(p->id, keywordValue(*p, value, function));
     }
-    return s;
+    return pcskeleton::settingsFrom(paper, given);
 }
 
-py::dict defaultsOf(const std::map<std::string, Keyword>& keywords) {
-    const Settings defaults;
+// {keyword: default} in the table's order, with `paper`.
+py::dict defaultsOf(bool reconstruction) {
     py::dict d;
-    for (const auto& [name, keyword] : keywords) d[name.c_str()] = keyword.get(defaults);
     d["paper"] = false;
+    for (const ParameterInfo& p : parameterTable()) {
+        if ((p.stage == Stage::Reconstruction) != reconstruction) continue;
+        const double value = defaultValue(p.id);
+        if (p.type == ValueType::Switch) d[p.name] = value != 0;
+        else if (p.type == ValueType::Integer) d[p.name] = (long long)value;
+        else d[p.name] = value;
+    }
+    return d;
+}
+
+// {keyword: (help, advanced)} for the package's docstrings.
+py::dict helpOf(bool reconstruction) {
+    py::dict d;
+    for (const ParameterInfo& p : parameterTable()) {
+        if ((p.stage == Stage::Reconstruction) == reconstruction) d[p.name] = py::make_tuple(p.help, p.advanced);
+    }
     return d;
 }
 
@@ -530,20 +459,15 @@ class PyContraction {
 
 public:
     PyContraction(const DoubleArray& points, const py::dict& kwargs, const py::object& progress)
-        : points_(pointsFrom(points, "points")), settings_(settingsFrom(kwargs, skeletonKeywords(), "Contraction")) {
-        checkThinningParameters(settings_.skeleton.thinning);
+        : points_(pointsFrom(points, "points")), settings_(settingsFrom(kwargs, false, "Contraction")) {
         withoutGil(progress, [&](const ProgressCallback& callback) {
-            work_ = std::make_unique<ContractionInput>(points_, settings_.skeleton.resolution,
-                                                       settings_.skeleton.contraction.outliers,
-                                                       progressRange(callback, 0, 40));
-            contraction_ = std::make_unique<LaplacianContraction>(work_->points(), settings_.skeleton.contraction,
-                                                                  progressRange(callback, 40, 100));
+            pipeline_ = std::make_unique<SkeletonPipeline>(points_, settings_.skeleton, callback);
             return 0;
         });
     }
 
     py::dict iterate() {
-        const IterationReport r = exclusively([&] { return contraction_->iterate(); });
+        const IterationReport r = exclusively([&] { return pipeline_->contraction().iterate(); });
         py::dict d;
         d["iteration"] = r.iteration;
         d["extent_ratio"] = r.extentRatio;
@@ -552,32 +476,29 @@ public:
         return d;
     }
     bool finished() const {
-        return exclusively([&] { return contraction_->finished(); });
+        return exclusively([&] { return pipeline_->contraction().finished(); });
     }
     const char* stopReason() const {
-        return stopReasonName(exclusively([&] { return contraction_->stopReason(); }));
+        return stopReasonName(exclusively([&] { return pipeline_->contraction().stopReason(); }));
     }
     py::array contracted() const {
-        return arrayOwning(exclusively([&] { return contraction_->contractedPoints(); }));
+        return arrayOwning(exclusively([&] { return pipeline_->contraction().contractedPoints(); }));
     }
     py::array workingPoints() const {
-        return arrayOwning(exclusively([&] { return work_->points(); }));
+        return arrayOwning(exclusively([&] { return pipeline_->input().points(); }));
     }
 
     PySkeleton skeleton(const py::object& progress) const {
         return skeletonFrom(withoutGil(progress, [&](const ProgressCallback& callback) {
             const std::lock_guard<std::mutex> lock(mutex_);
-            SkeletonResult result = skeletonFromContraction(*contraction_, settings_.skeleton.thinning, callback);
-            work_->carryToAllPoints(result);
-            return result;
+            return pipeline_->skeleton(callback);
         }));
     }
 
 private:
-    PointList points_;  // ContractionInput refers to it
+    PointList points_;  // the pipeline refers to it
     Settings settings_;
-    std::unique_ptr<ContractionInput> work_;
-    std::unique_ptr<LaplacianContraction> contraction_;
+    std::unique_ptr<SkeletonPipeline> pipeline_;
 };
 
 }  // namespace
@@ -599,8 +520,10 @@ PYBIND11_MODULE(_pcskeleton, m) {
         }
     });
 
-    m.def("skeleton_defaults", [] { return defaultsOf(skeletonKeywords()); });
-    m.def("reconstruction_defaults", [] { return defaultsOf(reconstructionKeywords()); });
+    m.def("skeleton_defaults", [] { return defaultsOf(false); });
+    m.def("reconstruction_defaults", [] { return defaultsOf(true); });
+    m.def("skeleton_help", [] { return helpOf(false); });
+    m.def("reconstruction_help", [] { return helpOf(true); });
 
     py::class_<PySkeleton>(m, "Skeleton")
         .def(py::init([](const DoubleArray& nodes, const py::object& edges, const py::object& radii,
@@ -627,7 +550,7 @@ PYBIND11_MODULE(_pcskeleton, m) {
 
     m.def("_skeletonize", [](const DoubleArray& points, const py::dict& kwargs, const py::object& progress) {
         const PointList input = pointsFrom(points, "points");
-        const Settings settings = settingsFrom(kwargs, skeletonKeywords(), "skeletonize");
+        const Settings settings = settingsFrom(kwargs, false, "skeletonize");
         return skeletonFrom(withoutGil(progress, [&](const ProgressCallback& callback) {
             return computeCurveSkeleton(input, settings.skeleton, callback);
         }));
@@ -645,7 +568,7 @@ PYBIND11_MODULE(_pcskeleton, m) {
     m.def("_reconstruct", [](const DoubleArray& points, const PySkeleton& skeleton, const py::dict& kwargs,
                              const py::object& progress) {
         const PointList input = pointsFrom(points, "points");
-        const Settings settings = settingsFrom(kwargs, reconstructionKeywords(), "reconstruct");
+        const Settings settings = settingsFrom(kwargs, true, "reconstruct");
         Reconstruction r = withoutGil(progress, [&](const ProgressCallback& callback) {
             return reconstructFromSkeleton(input, skeleton.graph, settings.reconstruction, callback);
         });

@@ -37,78 +37,24 @@ __all__ = [
 SKELETON_PARAMETERS = _pcskeleton.skeleton_defaults()
 RECONSTRUCTION_PARAMETERS = _pcskeleton.reconstruction_defaults()
 
-# What each keyword does and which way to turn it; the CLI option of the same name (with
-# dashes) does the same. The defaults are filled in from the library.
-_SKELETON_HELP = [
-    ("paper", "the paper's pipeline exactly: no outlier detection, denoising, link limit, "
-              "re-centring, refinement, gap bridging, tip extension or subsampling. Other "
-              "keywords still apply on top (paper=True, refine=True is the paper plus refinement)."),
-    ("k", "neighbours whose tangent-plane Delaunay triangulation gives each point's 1-ring; "
-          "0 = 1.2% of the points, between 8 and 30. Raise for noisy scans; lower if close "
-          "parts get connected."),
-    ("wl", "initial contraction weight W_L0; 0 = 1/(5 x mean 1-ring size). Too high pulls thin "
-           "parts into thick ones; too low leaves tips sticking out."),
-    ("wh", "initial attraction weight W_H0; opposes wl."),
-    ("sl", "W_L grows by this factor per iteration; 2 when thin parts join thick ones (paper Fig. 10)."),
-    ("max_wl", "cap on W_L."),
-    ("max_wh", "cap on each point's W_H."),
-    ("row_limit", "cap on a Laplacian row's weight sum."),
-    ("iterations", "contraction iterations at most; raise if the report says the limit was reached."),
-    ("threshold", "stop when the 1-ring size shrinks by less than this fraction in an iteration."),
-    ("radius", "thinning ball radius, a fraction of the bounding-box diagonal. Larger merges "
-               "close parts and small loops; smaller keeps more detail and more noise."),
-    ("link_limit", "1-ring neighbours whose contracted points ended more than this many radii "
-                   "apart connect their nodes only where nothing else does. Lower it if close "
-                   "parts get false loops; 0 = every neighbour connects (the paper)."),
-    ("gap_limit", "a limb pointing at another piece of the skeleton at most this many radii "
-                  "ahead (a gap in the data) is joined to it; 0 = no bridge (the paper)."),
-    ("extend_tips", "extend each limb to the end of its tip's points (contraction shortens limbs)."),
-    ("refine", "remove short spurs and loops smaller than their tube, merge junctions closer "
-               "than the node spacing, open loops narrower than their tube where parts touch "
-               "(noise and misaligned scans leave them)."),
-    ("loop_opening", "refinement opens a loop whose hole is narrower than this many tube radii at "
-                     "its bone longest for its radii, if that bone passes closer than "
-                     "loop_clearance of its radius to a point (parts that touch); 0 opens none."),
-    ("loop_clearance", "see loop_opening; lower either if a real narrow hole is lost."),
-    ("gap_stretch", "refinement cuts a bone that joins two strands straight across the gap between "
-                    "them (on a loop, between junctions the strands run through) when it is longer "
-                    "than this many times the radii at its two ends together; 0 cuts none."),
-    ("recentre", "move a node whose points cover one side of its bone only (one-view scans, "
-                 "holes) to the centre of the circle through them."),
-    ("keep_outliers", "contract every point; by default points that do not belong to the sampled "
-                      "surface get no node (-1 in correspondence)."),
-    ("outlier_isolation", "a point whose 8th nearest neighbour is farther than this many typical "
-                          "spacings is an outlier; raise it if sparse parts are taken for outliers."),
-    ("outlier_local", "a point whose 8th nearest neighbour is farther than this times that of its "
-                      "neighbours is an outlier; lower finds outliers closer to the surface."),
-    ("outlier_cluster", "groups holding less than this share of the cloud are outlier clusters; 0 keeps every group."),
-    ("denoise", "contract a copy denoised by this many passes of projection onto local planes; "
-                "-1 = automatic (only noisy clouds), 0 = never."),
-    ("contracted_points", "clouds with more points are contracted through a well-spread subsample "
-                          "of at most this many; every point still gets its node. Up to 20000 the "
-                          "skeleton is the same on every CPU; above, a faster solver's may differ."),
-    ("full_resolution", "contract every point (the paper's way; about 2.7 KB per point)."),
-    ("memory_limit", "refuse, before any work, a run needing more than this many GB; None = 80% of the machine."),
-]
-_RECONSTRUCTION_HELP = [
-    ("paper", "the paper's plain fit with uniform point weights and the zero level set as it is."),
-    ("resolution", "grid cells along the longest side of the domain (16-512)."),
-    ("smooth_weight", "w1, smoothness of the field."),
-    ("surface_weight", "w2, the surface passes through the points."),
-    ("skeleton_weight", "w3, the field is -radius on the skeleton."),
-    ("outside_weight", "w4, the field is positive far from the skeleton."),
-    ("outside_radii", "'far' is more than this many node radii from the skeleton."),
-    ("data_topology", "the paper's plain fit: the surface may have handles and parts the skeleton "
-                      "has not (by default it has exactly the skeleton's topology)."),
-    ("uniform_point_weights", "every point weighs w2 (the paper); by default noisy points weigh less."),
-    ("level_set", "the field's zero level set as it is (the paper); by default, where there are points, "
-                  "the surface's vertices move (at most a grid cell) onto a local fit of the points."),
-]
+# What each keyword does and which way to turn it, from the library's parameter table (the
+# CLI's options and the MeshLab dialogs say the same); common keywords first.
+_PAPER_HELP = {
+    False: "the paper's pipeline exactly: no outlier detection, denoising, link limit, re-centring, refinement, "
+           "gap bridging, tip extension or subsampling; every other keyword given still applies on top "
+           "(paper=True, refine=True is the paper plus refinement).",
+    True: "the paper's plain fit with uniform point weights and the zero level set as it is; every other keyword "
+          "given still applies on top.",
+}
 
 
-def _describe(table, defaults):
-    return "\n".join(textwrap.fill(f"{name} [{defaults[name]!r}]: {text}", width=88, initial_indent="    ",
-                                   subsequent_indent="        ") for name, text in table)
+def _describe(help_table, defaults, reconstruction):
+    rows = [("paper", _PAPER_HELP[reconstruction], False)]
+    rows += [(name, text, advanced) for name, (text, advanced) in help_table.items()]
+    rows.sort(key=lambda row: row[2])  # stable: the table's order, common keywords first
+    return "\n".join(textwrap.fill(f"{name} [{defaults[name]!r}]: {text}" + (" (advanced)" if advanced else ""),
+                                   width=88, initial_indent="    ", subsequent_indent="        ")
+                     for name, text, advanced in rows)
 
 
 def _points_of(points):
@@ -128,9 +74,10 @@ skeletonize.__doc__ = f"""The curve skeleton of a point cloud: contraction, thin
     points: an (n, 3) array (converted to float64) or an Open3D PointCloud; never modified.
     progress: None, or a callable(percent, message) called as the work goes on. An
         exception it raises is re-raised when the work is done.
-    parameters: keywords, each as the CLI's option of the same name [default]:
+    parameters: keywords, each as the CLI's option of the same name [default]; None means the
+        default (radius, the node spacing's former name, is still accepted):
 
-{_describe(_SKELETON_HELP, SKELETON_PARAMETERS)}
+{_describe(_pcskeleton.skeleton_help(), SKELETON_PARAMETERS, False)}
 
     Returns a Skeleton: nodes (N, 3), edges (E, 2), radii (N,), correspondence (n,) (the
     node of each input point, -1 for none, e.g. an outlier), contracted (n, 3) and report,
@@ -180,7 +127,7 @@ reconstruct.__doc__ = f"""A closed surface through the points whose inside and t
     skeleton: a Skeleton with radii (skeletonize's, read_skeleton's of a .ply, or edited).
     parameters [default]:
 
-{_describe(_RECONSTRUCTION_HELP, RECONSTRUCTION_PARAMETERS)}
+{_describe(_pcskeleton.reconstruction_help(), RECONSTRUCTION_PARAMETERS, True)}
 
     Returns (vertices (V, 3), faces (F, 3), report): faces counter-clockwise seen from
     outside; report a dict with genus, components, closed, warnings and text.
