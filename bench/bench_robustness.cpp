@@ -47,8 +47,8 @@
 #include <pcskeleton/core/openmp_wait_policy.h>
 #include <pcskeleton/curve_skeleton.h>
 #include <pcskeleton/io/point_cloud_io.h>
-#include <pcskeleton/analysis/tip_extension.h>
-#include <pcskeleton/core/outlier_detection.h>
+#include <pcskeleton/finishing/tip_extension.h>
+#include <pcskeleton/contraction/outlier_detection.h>
 
 
 #include <algorithm>
@@ -114,14 +114,14 @@ Row measure(const Subject& subject, const Condition& condition, std::size_t n, c
     const double diagonal = boundingBox(subject.sample(n, 11)).diagonal().norm();
     // Tip extension is applied here, after the run, so that both tip gaps can be measured.
     SkeletonParameters parameters = pipeline;
-    parameters.thinning.extendTips = false;
+    parameters.graph.extendTips = false;
     const auto start = std::chrono::steady_clock::now();
     const SkeletonResult result = computeCurveSkeleton(cloud, parameters);
     SkeletonGraph extended = result.skeleton;
     extendTips(extended, cloud, result.quality.nodeSpacing);
     Row row;
     row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const SkeletonGraph& skeleton = pipeline.thinning.extendTips ? extended : result.skeleton;
+    const SkeletonGraph& skeleton = pipeline.graph.extendTips ? extended : result.skeleton;
 
     row.points = int(cloud.size());
     const SkeletonTopology topology = analyseTopology(skeleton);
@@ -262,18 +262,18 @@ int main(int argc, char** argv) {
     }
     if (!numbers.empty()) n = std::size_t(numbers[0]);
     SkeletonParameters pipeline = paper ? SkeletonParameters::paper() : SkeletonParameters{};
-    if (std::find(args.begin(), args.end(), "--no-refine") != args.end()) pipeline.thinning.refine = false;
-    if (std::find(args.begin(), args.end(), "--no-recentre") != args.end()) pipeline.thinning.recentre = false;
-    if (std::find(args.begin(), args.end(), "--extend-tips") != args.end()) pipeline.thinning.extendTips = true;
-    if (std::find(args.begin(), args.end(), "--no-link-limit") != args.end()) pipeline.thinning.linkLimit = 0;
+    if (std::find(args.begin(), args.end(), "--no-refine") != args.end()) pipeline.graph.refine = false;
+    if (std::find(args.begin(), args.end(), "--no-recentre") != args.end()) pipeline.graph.recentre = false;
+    if (std::find(args.begin(), args.end(), "--extend-tips") != args.end()) pipeline.graph.extendTips = true;
+    if (std::find(args.begin(), args.end(), "--no-link-limit") != args.end()) pipeline.graph.linkLimit = 0;
     const auto numberAfter = [&](const char* option, double& value) {
         const auto found = std::find(args.begin(), args.end(), option);
         if (found != args.end() && found + 1 != args.end()) value = std::atof((found + 1)->c_str());
     };
-    numberAfter("--gap-limit", pipeline.thinning.gapLimit);
-    numberAfter("--loop-opening", pipeline.thinning.narrowLoops.minOpening);
-    numberAfter("--loop-clearance", pipeline.thinning.narrowLoops.minClearance);
-    numberAfter("--gap-stretch", pipeline.thinning.narrowLoops.gapStretch);
+    numberAfter("--gap-limit", pipeline.graph.gapLimit);
+    numberAfter("--loop-opening", pipeline.graph.refinementLimits.minOpening);
+    numberAfter("--loop-clearance", pipeline.graph.refinementLimits.minClearance);
+    numberAfter("--gap-stretch", pipeline.graph.refinementLimits.gapStretch);
     double neighbours = pipeline.contraction.neighbourCount, denoising = pipeline.contraction.denoisingPasses;
     numberAfter("--k", neighbours);
     numberAfter("--denoise", denoising);

@@ -161,14 +161,25 @@ for option in --contracted --correspondence --k --wl --wh --sl --max-wl --max-wh
               --paper --report --force --quiet; do
   grep -q -- "$option" help.txt || fail "--help does not document $option"
 done
-grep -q "\[0.02\]" help.txt || fail "--help does not give the radius default"
-grep -q "apart were pulled to different bones" help.txt && grep -q "\[4\]" help.txt \
-  || fail "--help does not explain --link-limit with its default"
-grep -q "points \[15000\]" help.txt || fail "--help does not give the --contracted-points default"
-grep -q "ahead (a gap in the data" help.txt && grep -q "a bone joins them \[8\]" help.txt \
-  || fail "--help does not explain --gap-limit with its default"
-grep -q "narrower than X tube" help.txt && grep -q "radii \[1\] at its bone" help.txt && grep -q "of its radius to a point \[0.35\]" help.txt \
-  || fail "--help does not explain --loop-opening and --loop-clearance with their defaults"
+# Each option of the parameter table: its line, its help, and the library's default last.
+flat=$(tr '\n' ' ' <help.txt | tr -s ' ')
+explains() {  # option, words of its help, default
+  grep -qF -- "$1" <<<"$flat" && grep -qF -- "$2" <<<"$flat" && grep -qF -- "$3]" <<<"$flat" \
+    || fail "--help does not explain $1 ('$2') with its default $3]"
+}
+explains "--node-spacing X (or --radius)" "sample the contracted points into nodes" "[0.02"
+explains "--link-limit X" "apart were pulled to different bones" "does. Lower it if close parts get false loops; 0: every neighbour pair connects (the paper's). [4"
+explains "--contracted-points N" "a subsample of at most this many" "one CPU to another. [15000"
+explains "--gap-limit X" "(an occluded or missing stretch of the scan), a bone joins them" "(the paper's). [8"
+explains "--loop-opening X" "narrower than this many tube radii" "0 opens none. [1"
+explains "--loop-clearance X" "within which that bone must pass a point" "is lost. [0.35"
+explains "--refine, --no-refine" "Clean what noise leaves" "[on"
+explains "--keep-outliers, --no-keep-outliers" "Contract every point" "[off"
+
+# --paper means one thing: the paper's pipeline first, then every other option, in any order.
+"$PCSKELETON" $M/knot.off -o refine_paper.ply --refine --paper --quiet --force
+"$PCSKELETON" $M/knot.off -o paper_refine.ply --paper --refine --quiet --force
+cmp -s refine_paper.ply paper_refine.ply || fail "--refine --paper and --paper --refine give different skeletons"
 
 # Bad input: non-zero exit and a one-line reason; nothing written.
 expect_error() {  # exit code, text in the message, arguments...
@@ -192,7 +203,7 @@ expect_error 2 "must end in .ply, .obj or .cg" $M/knot.off -o out.swc
 expect_error 2 "expects a number" $M/knot.off -o out.ply --radius big
 expect_error 2 "contracted-points 2147483648 is out of range" $M/knot.off -o out.ply --contracted-points 2147483648
 expect_error 2 "unknown option" $M/knot.off -o out.ply --fast
-expect_error 1 "^pcskeleton: --radius must be a fraction" $M/knot.off -o out.ply --radius 2
+expect_error 1 "^pcskeleton: --node-spacing must be a fraction" $M/knot.off -o out.ply --radius 2
 expect_error 1 "^pcskeleton: --sl must be between 1 and 1000" $M/knot.off -o out.ply --sl 0.5
 expect_error 1 "^pcskeleton: --denoise must be between 0 (off) and 10, or -1" $M/knot.off -o out.ply --denoise 11
 expect_error 1 "^pcskeleton: --link-limit must be 0 (every link connects" $M/knot.off -o out.ply --link-limit -1
@@ -294,8 +305,8 @@ $GRAPH check big.ply --cycles 1 --components 1 || fail "the subsampled torus has
 grep -q "^Input: 30000 points in 1 part" big_full.log || { cat big_full.log; fail "--full-resolution subsampled"; }
 "$PCSKELETON" big_torus.xyz -o big_few.ply --contracted-points 5000 2>big_few.log
 grep -q "multi-resolution: [1-4][0-9][0-9][0-9] contracted" big_few.log || { cat big_few.log; fail "--contracted-points 5000 ignored"; }
-expect_error 2 "--contracted-points must be at least 1" big_torus.xyz -o m.ply --contracted-points 0
-expect_error 2 "--memory-limit must be a positive number" big_torus.xyz -o m.ply --memory-limit -1
+expect_error 1 "--contracted-points must be at least 1" big_torus.xyz -o m.ply --contracted-points 0
+expect_error 1 "--memory-limit must be 0 (automatic) or a positive number" big_torus.xyz -o m.ply --memory-limit -1
 expect_error 1 "A skeleton of 30000 points, all 30000 of them contracted, needs about 0.081 GB.*more than the 0.05 GB allowed; at most [0-9]* contracted points would fit. Lower --contracted-points" \
   big_torus.xyz -o m.ply --full-resolution --memory-limit 0.05
 [ ! -e m.ply ] || fail "a refused run wrote m.ply"

@@ -30,7 +30,7 @@ expect_refusal() {
 # A vertex line with a word where a number belongs: MeshLab's OBJ importer keeps the
 # vertices before it; our filter refuses the two it gets, naming the dialog's parameter.
 cp "$BAD/obj_vertex_garbage.obj" garbage.obj
-expect_refusal "Too few points: 2 distinct points, at least 9 are needed (k nearest neighbours + 1). Lower 'Neighbours (k)'" \
+expect_refusal "Too few points: 2 distinct points, at least 9 are needed (k nearest neighbours + 1). Lower 'Neighbours k (0 = automatic)'" \
   "$SCRIPTS/compute_curve_skeleton.mlx" garbage.obj
 
 # A thousand copies of one point.

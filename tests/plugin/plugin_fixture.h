@@ -5,7 +5,7 @@
 #include <common/interfaces.h>
 #include <common/meshmodel.h>
 
-#include <pcskeleton/core/point_cloud_input.h>
+#include <pcskeleton/contraction/point_cloud_input.h>
 #include <pcskeleton/skeleton/skeleton_graph.h>
 
 #include <vcg/complex/allocate.h>

@@ -308,7 +308,7 @@ TEST_F(SkeletonFilterTest, ARefusedParameterIsNamedByItsDialogLabel) {
 TEST_F(SkeletonFilterTest, NarrowLoopLimitsAreInTheDialog) {
     QAction* a = action(kSkeletonFilter);
     const RichParameterList parameters = defaults(a);
-    const pcskeleton::NarrowLoopLimits loops;
+    const pcskeleton::RefinementLimits loops;
     for (const auto& [name, value] : {std::pair{"loopOpening", loops.minOpening}, std::pair{"loopClearance", loops.minClearance}}) {
         ASSERT_TRUE(parameters.hasParameter(name)) << name;
         EXPECT_FLOAT_EQ(parameters.getFloat(name), float(value)) << name;

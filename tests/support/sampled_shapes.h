@@ -2,7 +2,7 @@
 // Sampling is uniform by area and deterministic for a given seed.
 #pragma once
 
-#include "pcskeleton/core/point_cloud_input.h"
+#include "pcskeleton/contraction/point_cloud_input.h"
 #include "pcskeleton/skeleton/skeleton_graph.h"
 
 #include <cstdint>

@@ -3,7 +3,7 @@
 // scans. For the robustness suite (bench_robustness) and the tests.
 #pragma once
 
-#include "pcskeleton/core/point_cloud_input.h"
+#include "pcskeleton/contraction/point_cloud_input.h"
 
 #include <cstdint>
 
