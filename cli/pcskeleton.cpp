@@ -10,7 +10,6 @@
 #include <pcskeleton/io/skeleton_io.h>
 
 #include <cerrno>
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
