@@ -40,7 +40,7 @@
 //                                       outliers found, per condition
 //        bench_robustness --write SHAPE CONDITION FILE [POINTS]
 //                                       writes one case's cloud (.xyz or .ply), e.g. for
-//                                       the README's pictures
+//                                       the pictures in docs/
 #include "robustness_suite.h"
 #include "run_in_child.h"
 

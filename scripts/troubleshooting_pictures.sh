@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates the README's troubleshooting pictures (docs/troubleshooting/*.png): typical
+# Regenerates the troubleshooting pictures of docs/quality-and-troubleshooting.md (docs/troubleshooting/*.png): typical
 # failures on the robustness suite's cases, and the parameter that fixes each. Needs a
 # build (scripts/build.sh). Usage: bash scripts/troubleshooting_pictures.sh
 set -euo pipefail

@@ -1,4 +1,4 @@
-"""The README's Python example: the skeleton of libcgal-demo's elephant, drawn with matplotlib.
+"""The Python example of docs/python.md: the skeleton of libcgal-demo's elephant, drawn with matplotlib.
 
 usage: python3 skeleton_picture.py [POINTS_FILE] [PICTURE.png]
 (defaults: the elephant from Debian's libcgal-demo, elephant_skeleton_python.png here)

@@ -310,7 +310,7 @@ expect_error 1 "--memory-limit must be 0 (automatic) or a positive number" big_t
 expect_error 1 "A skeleton of 30000 points, all 30000 of them contracted, needs about 0.081 GB.*more than the 0.05 GB allowed; at most [0-9]* contracted points would fit. Lower --contracted-points" \
   big_torus.xyz -o m.ply --full-resolution --memory-limit 0.05
 [ ! -e m.ply ] || fail "a refused run wrote m.ply"
-# OpenMP threads wait passively (see README, "Slow on a busy machine"): the tool restarts
+# OpenMP threads wait passively (see docs/quality-and-troubleshooting.md, "Slow on a busy machine"): the tool restarts
 # itself with OMP_WAIT_POLICY=passive, so libgomp's last report of its settings has no
 # spinning; a policy the user set is kept, without a restart. (Newer libgomp prefixes
 # each setting with its device, "[host]".)

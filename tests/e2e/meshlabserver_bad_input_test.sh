@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Bad input through meshlabserver and the shipped scripts, for every case that reaches our
-# filters (MeshLab's own importers read the file first; see the README on those): each
+# filters (MeshLab's own importers read the file first; see docs/files-and-parameters.md on those): each
 # run fails (a non-zero exit status that is not a crash) with the filter's reason in the
 # log, and writes nothing.
 # usage: meshlabserver_bad_input_test.sh MESHLABSERVER SCRIPTS_DIR WORKDIR

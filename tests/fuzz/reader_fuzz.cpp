@@ -11,7 +11,7 @@
 // as many output paths as mutations are written or refused, never leaving a file behind.
 //
 // The test suite runs a few thousand executions; developers run millions the same way
-// (see the README). The input being read is always WORK_DIR/current.<ext>: after a crash
+// (see docs/tests.md). The input being read is always WORK_DIR/current.<ext>: after a crash
 // it is the file to keep as a regression case in tests/data/bad_inputs/. With --isolate
 // every read runs in a child process, so that a crash is counted (and its input kept as
 // WORK_DIR/crash-N.<ext>) and the run goes on: slower, for long runs and old readers.
