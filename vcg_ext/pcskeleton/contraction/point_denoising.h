@@ -6,7 +6,7 @@
 //
 // A clean surface needs none, and on a coarse sampling the planes cut corners (a coarse
 // figure eight loses a hole), so by default the cloud is denoised only when it is noisy:
-// when surfaceNoise() says so. Robustness suite: see the README.
+// when surfaceNoise() says so.
 #pragma once
 
 #include "pcskeleton/core/point.h"
@@ -16,9 +16,8 @@ namespace pcskeleton {
 // The surface noise of a cloud, scale-free: the median, over every 7th point, of the RMS
 // residual of a quadratic height field fitted to the point's k nearest neighbours, over
 // the neighbourhood's RMS extent. A quadric follows the curvature of a clean surface, even
-// a coarse one: 0.0002-0.08 on the robustness suite's clean, one-view, holed and outlier
-// cases, 0.21 on the elephant mesh's very uneven vertices; 0.14-0.3 with 0.5% noise or
-// misalignment (where denoising changed nothing), 0.26-0.5 with 1-2%.
+// a coarse one, so the measure stays low there; its values on clean and noisy clouds, and
+// the threshold below: docs/benchmarks.md#measurements-behind-the-constants.
 double surfaceNoise(const PointList& points, int neighbours);
 
 inline constexpr double kNoisySurface = 0.25;    // surfaceNoise() above this: denoise

@@ -88,10 +88,8 @@ PointSubsample spreadSubsample(const PointList& points, std::size_t target, cons
     result.cellSize = cellSize;
 
     // Each cube keeps its point nearest to the cube's centroid: a real sample, in the middle,
-    // whatever the order of the input. (A random point of each cube measured no better: on
-    // the paper's tree_small, whose thinnest twigs are a few cubes across at 15000 kept
-    // points, the tips found vary from 19 to 28 of full resolution's 31 with the choice of
-    // point, and are 23 with this one.)
+    // whatever the order of the input (a random point of each cube measured no better:
+    // docs/benchmarks.md#measurements-behind-the-constants).
     const Grid grid(origin, cellSize);
     std::unordered_map<std::uint64_t, int> cubeOf;
     cubeOf.reserve(2 * target);

@@ -2,10 +2,8 @@
 //
 // libgomp spins for a while before it sleeps (OMP_WAIT_POLICY unset). When other programs
 // keep the cores busy, a spinning thread takes the time its partner needs to finish, and
-// every one of the reconstruction solver's parallel loops ends late: `bench_reconstruction
-// 128` beside two busy loops on 2 cores solved the torus in 4.4 s and the cube frame in
-// 10.1 s with spinning waits, 2.2 s and 6.9 s with passive ones (1.3 s and 3.8 s on an idle
-// machine, either way). libgomp reads the policy once, when it is loaded, before main():
+// every one of the reconstruction solver's parallel loops ends late (docs/benchmarks.md#measurements-behind-the-constants).
+// libgomp reads the policy once, when it is loaded, before main():
 // a program can choose it for itself only by starting again with the variable set.
 #pragma once
 

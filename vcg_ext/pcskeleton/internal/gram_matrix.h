@@ -1,8 +1,7 @@
 // The matrix LᵀL of a sparse L whose pattern never changes (the contraction's Laplacian):
 // its pattern is worked out once, and each update only recomputes the values in place.
-// Before, every iteration formed LᵀL anew with Eigen's general sparse product (allocating,
-// sorting, then copying from row to column order): 17 ms of each 90 ms iteration at 10K
-// points.
+// Eigen's general sparse product would allocate, sort and copy from row to column order
+// every iteration, a noticeable share of it (docs/benchmarks.md#measurements-behind-the-constants).
 #pragma once
 
 #include <Eigen/SparseCore>

@@ -93,9 +93,9 @@ bool SparseSpdSolver::factorize(const Matrix& m) {
     if (impl_->kind == LinearSolver::Cholmod) {
         const OneBlasThread deterministic;
         if (analyse) {
-            // One ordering instead of CHOLMOD's default trial of several. Measured on
-            // sampled surfaces: AMD is as good below ~50K unknowns; above, METIS gives
-            // ~20% less fill and saves the time of the AMD trial.
+            // One ordering instead of CHOLMOD's default trial of several: AMD is as good
+            // on small systems, METIS gives less fill on large ones
+            // (docs/benchmarks.md#measurements-behind-the-constants).
             cholmod_common& settings = impl_->cholmod.cholmod();
             settings.nmethods = 1;
             settings.method[0].ordering = m.rows() > 50000 ? CHOLMOD_METIS : CHOLMOD_AMD;

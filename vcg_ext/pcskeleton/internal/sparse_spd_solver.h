@@ -12,15 +12,13 @@ namespace pcskeleton {
 enum class LinearSolver {
     // The default: EigenSimplicial up to kLargestPortableSystem unknowns, Cholmod above.
     Automatic,
-    // SuiteSparse CHOLMOD supernodal Cholesky: the fastest on large systems (2x Eigen's at
-    // 50K unknowns, bench_contraction). Its dense blocks go to the machine's BLAS, and
-    // OpenBLAS picks its kernels by CPU: the same cloud gave different skeletons with
-    // OPENBLAS_CORETYPE=Haswell and =Sandybridge (libcgal-demo's hand from one view: a
-    // false loop or none).
+    // SuiteSparse CHOLMOD supernodal Cholesky: the fastest on large systems. Its dense
+    // blocks go to the machine's BLAS, and OpenBLAS picks its kernels by CPU, so the same
+    // cloud can give different skeletons on different CPUs.
     Cholmod,
     // Eigen's SimplicialLDLT: our own compiled code only, no BLAS, so the result does not
-    // depend on the CPU's BLAS kernels. As fast as CHOLMOD at 6000 unknowns, 16% slower at
-    // 15000 (bench_contraction).
+    // depend on the CPU's BLAS kernels; close to CHOLMOD's speed up to the limit
+    // (docs/benchmarks.md#measurements-behind-the-constants).
     EigenSimplicial,
 };
 

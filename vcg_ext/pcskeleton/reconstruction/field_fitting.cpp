@@ -13,8 +13,8 @@ namespace {
 
 using Vector = Eigen::VectorXd;
 
-// Node-wise vector work on both cores. Eigen runs coefficient-wise expressions on one
-// thread, and at 128³ they were half of the solve's time (bench_reconstruction).
+// Node-wise vector work on every core: Eigen runs coefficient-wise expressions on one
+// thread, and at fine grids they are a large share of the solve (docs/benchmarks.md#measurements-behind-the-constants).
 template <class Body>
 void forEachNode(Eigen::Index size, Body&& body) {
 #pragma omp parallel for schedule(static)

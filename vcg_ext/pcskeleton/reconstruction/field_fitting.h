@@ -39,9 +39,8 @@ struct FieldProblem {
 };
 
 struct FieldSolverOptions {
-    // On the residual relative to the right-hand side. bench_surface gave the same surfaces
-    // with 1e-6, 1e-5 and 3e-5 (mean distances per condition within 0.002% of the diagonal,
-    // every topology kept); 1e-5 took 1-2 more iterations than 3e-5, 1e-6 three more again.
+    // On the residual relative to the right-hand side: tighter tolerances give the same
+    // surfaces for more iterations (docs/benchmarks.md#measurements-behind-the-constants).
     double tolerance = 3e-5;
     int maxIterations = 100;
 };

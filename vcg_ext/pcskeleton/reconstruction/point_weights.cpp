@@ -15,7 +15,7 @@ namespace {
 constexpr int kSpreadNeighbours = 16;
 // How fast a point's weight falls once its spread passes a cell: the fourth power keeps
 // points scattered by half a cell at 94% and cuts those scattered by two cells to 6%.
-// By bench_surface (README, Benchmarks): see ReconstructionParameters::adaptToNoise.
+// Chosen with bench_surface (docs/benchmarks.md#measurements-behind-the-constants).
 constexpr double kFalloffPower = 4.0;
 
 }  // namespace

@@ -40,10 +40,8 @@ struct ReconstructionParameters {
     bool keepSkeletonTopology = true;
     // Points whose neighbours scatter across the surface by more than a grid cell weigh
     // less in the surface term (point_weights.h): noise then makes no bumps. false: every
-    // point weighs w2, the paper's. On by bench_surface (--uniform-point-weights against
-    // the default): with 2% noise the surface's mean distance to the true surface falls
-    // from 1.68% to 1.13% of the diagonal, with 1% from 0.43% to 0.40%; clean, scanned
-    // and misaligned cases and every topology are unchanged.
+    // point weighs w2, the paper's. On because it brings noisy surfaces closer to the true
+    // one and changes nothing on clean ones (docs/benchmarks.md#measurements-behind-the-constants).
     bool adaptToNoise = true;
     // Where data exists the surface's vertices move onto a local fit of the points
     // (vertex_fitting.h), by at most a cell. false: the zero level set as it is.

@@ -103,9 +103,9 @@ bool isSimple(const LocalComponents& c) { return c.inside == 1 && c.outside == 1
 // outside: within one part of the region, it closes exactly one loop.
 bool closesOneLoop(const LocalComponents& c) { return c.inside == 2 && c.outside == 1; }
 
-// localComponents remembered by neighbourhood. A growth meets few distinct ones (2810 of
-// 390000 tests on bench_reconstruction's cube frame), and counting components by repeated
-// dilation was half of the topology control's time.
+// localComponents remembered by neighbourhood: a growth meets few distinct ones, and
+// counting components by repeated dilation dominated the topology control's time
+// (docs/benchmarks.md#measurements-behind-the-constants).
 class LocalComponentsCache {
 public:
     LocalComponents of(std::uint32_t inside) {

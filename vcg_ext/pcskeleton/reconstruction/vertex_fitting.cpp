@@ -11,8 +11,7 @@ namespace pcskeleton {
 namespace {
 
 // Few neighbours follow a clean surface's curvature closely; over noise, more average it
-// (bench_surface: 16 against 40 neighbours gave 0.021 against 0.040% of the diagonal on
-// clean scans, 0.355 against 0.279 with 1% noise). The noisy fit is used where the clean
+// (docs/benchmarks.md#measurements-behind-the-constants). The noisy fit is used where the clean
 // one's points scatter off it by more than a quarter cell.
 constexpr int kCleanNeighbours = 16;
 constexpr int kNoisyNeighbours = 40;

@@ -9,8 +9,7 @@
 // undone where it would turn a triangle over, and not made where the points' plane
 // disagrees with the surface's normal by more than 45 degrees (the other wall of a part
 // thinner than the neighbourhood) or where no point is within 1.5 cells (no data there).
-// bench_surface (--level-set against the default): clean scans 0.064% -> 0.022% of the
-// diagonal from the true surface (screened Poisson: 0.023%), 1% noise 0.39% -> 0.28%.
+// Its effect on the distance to the true surface: docs/benchmarks.md#measurements-behind-the-constants.
 #pragma once
 
 #include "pcskeleton/reconstruction/iso_surface.h"

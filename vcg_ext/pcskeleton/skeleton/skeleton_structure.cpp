@@ -21,9 +21,8 @@ constexpr double kCoveredShare = 0.9;
 constexpr double kStragglerShare = 0.1;
 // A junction of three or four bones is a through junction when two of the bones other than
 // the one judged meet at more than 120 degrees (cosine below this), straighter than a
-// symmetric Y: a strand runs on through it and the judged bone leaves it from the side. (On the
-// robustness suite 120 and 127 degrees measured the same, 134 kept a false loop of the
-// knot with 1% noise, whose strand bends by 133 degrees at one end of it.)
+// symmetric Y: a strand runs on through it and the judged bone leaves it from the side
+// (docs/benchmarks.md#measurements-behind-the-constants).
 constexpr double kThroughCosine = -0.5;
 // The chain runs on from both ends of a U-turn bridge within 60 degrees of the same
 // direction (cosine above this): the parts it joins lie side by side.

@@ -97,19 +97,11 @@ Edge mostStretchedBone(const SkeletonGraph& graph, const std::vector<int>& cycle
 bool boneGrazesSurface(const SkeletonGraph& graph, const Edge& bone, const PointList& points,
                        const std::vector<std::vector<int>>& nodePoints, double minClearance);
 
-// When a loop is a contact between parts rather than a hole. Defaults by bench_robustness
-// --loop-opening X --loop-clearance F (README, Benchmarks): an opening under 1 tube radius
-// and a bone passing within 0.35 of its radius of a point turn 2 cases of 132 right (the
-// three rings with 1% noise, the elephant with half its points in 10% of its surface),
-// remove false loops in 8 cases still wrong and break none; every hole of the paper's
-// 9HandleTorus and Fertility inputs stays. A clearance of 0.45 loses a handle of
-// 9HandleTorus and a hole of Fertility misaligned by 1%; an opening of 1.6 the holes of
-// libcgal-demo's eight under 2% noise and 5% outliers.
-//
-// --gap-stretch X: a bone across a gap (bonesAcrossGaps) is longer than X times the radii at
-// its two ends together; 0 = none is cut. On the suite real bones between through
-// junctions reach 1.08 (the bars of the three rings), the bones across the knot's
-// crossings 1.19-1.85; 1.15 turns 4 cases of the knot right and none wrong.
+// When a loop is a contact between parts rather than a hole: its opening is under
+// minOpening tube radii, or a bone passes within minClearance of its radius of a point.
+// A bone across a gap (bonesAcrossGaps) is longer than gapStretch times the radii at its
+// two ends together; 0 = none is cut. Defaults chosen with bench_robustness
+// --loop-opening, --loop-clearance and --gap-stretch (docs/benchmarks.md#measurements-behind-the-constants).
 struct RefinementLimits {
     double minOpening = 1.0;     // in tube radii; 0 = no loop is a contact
     double minClearance = 0.35;  // fraction of the bone's radius

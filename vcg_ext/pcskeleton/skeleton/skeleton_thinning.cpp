@@ -16,8 +16,7 @@ namespace {
 
 // A link is stretched only if contraction also made it this many times longer than it
 // was: along a bone links shrink or keep their length, so sparse clouds, whose links are
-// several node spacings long from the start, keep theirs (the 231-point double torus of
-// CGAL's data loses a cycle at 1.0; 2.0 costs one case of 132 in bench_robustness, 3.0 three).
+// several node spacings long from the start, keep theirs (docs/benchmarks.md#measurements-behind-the-constants).
 constexpr double kStretchFactor = 2.0;
 
 int farthestFromCentroid(const PointList& points) {
