@@ -376,16 +376,17 @@ py::dict reportDict(const SkeletonResult& r) {
     py::dict d;
     d["topology"] = topologyDict(q.topology);
     py::dict convergence;
-    convergence["stop_reason"] = stopReasonName(q.stopReason);
-    convergence["iterations"] = q.iterations;
-    convergence["extent_ratio"] = q.extentRatio;
+    const ContractionOutcome contraction = q.contraction.value_or(ContractionOutcome{});
+    convergence["stop_reason"] = stopReasonName(contraction.stopReason);
+    convergence["iterations"] = contraction.iterations;
+    convergence["extent_ratio"] = contraction.extentRatio;
     d["convergence"] = convergence;
     d["node_spacing"] = q.nodeSpacing;
     d["input_points"] = q.inputPoints;
     d["contracted_points"] = q.points;
     d["multi_resolution"] = q.points < q.inputPoints;
     d["outliers"] = q.outliers + q.inputOutliers;
-    d["denoising_passes"] = q.denoisingPasses;
+    d["denoising_passes"] = contraction.denoisingPasses;
     py::list warnings;
     for (const QualityWarning& w : q.warnings()) {
         py::dict warning = problemDict(w.problem);

@@ -205,7 +205,8 @@ PointList savedScan(const std::string& file) { return readPointCloud(std::string
 void expectTheKnotsOneLoop(const std::string& file, int bridges, int unrefinedCycles) {
     const PointList scan = savedScan(file);
     const SkeletonQuality q = computeCurveSkeleton(scan).quality;
-    EXPECT_EQ(q.refinement.bridgesCut, bridges) << describe(q.refinement);
+    ASSERT_TRUE(q.refinement);
+    EXPECT_EQ(q.refinement->bridgesCut, bridges) << describe(*q.refinement);
     EXPECT_TRUE(q.topology.cycles == 1 && q.topology.tips == 0 && q.topology.components == 1) << describe(q.topology);
     SkeletonParameters unrefined;
     unrefined.graph.refine = false;
@@ -226,7 +227,8 @@ TEST(CurveSkeleton, AKnotSampledUnevenlyKeepsItsOneLoop) { expectTheKnotsOneLoop
 TEST(CurveSkeleton, TwoCloseTubesWithNoiseStayTwoParts) {
     const PointList scan = savedScan("two_tubes_noise1_6000.ply");
     const SkeletonQuality q = computeCurveSkeleton(scan).quality;
-    EXPECT_EQ(q.refinement.bridgesCut, 1) << describe(q.refinement);
+    ASSERT_TRUE(q.refinement);
+    EXPECT_EQ(q.refinement->bridgesCut, 1) << describe(*q.refinement);
     EXPECT_TRUE(q.topology.components == 2 && q.topology.tips == 4 && q.topology.cycles == 0) << describe(q.topology);
 }
 
@@ -237,14 +239,16 @@ TEST(CurveSkeleton, NoisyThreeRingsKeepTheirThreeLoopsOnly) {
     const SkeletonResult r = computeCurveSkeleton(scan);
     EXPECT_EQ(r.quality.topology.cycles, 3) << describe(r.quality.topology);
     EXPECT_EQ(r.quality.topology.components, 1) << describe(r.quality.topology);
-    EXPECT_EQ(r.quality.refinement.cyclesCut, 1) << describe(r.quality.refinement);
+    ASSERT_TRUE(r.quality.refinement);
+    EXPECT_EQ(r.quality.refinement->cyclesCut, 1) << describe(*r.quality.refinement);
 
     // Left whole as a narrow loop, the loop goes at the bone across the gap between the rings.
     SkeletonParameters noNarrowLoop;
     noNarrowLoop.graph.refinementLimits.minOpening = 0;
     const SkeletonQuality gap = computeCurveSkeleton(scan, noNarrowLoop).quality;
     EXPECT_EQ(gap.topology.cycles, 3) << describe(gap.topology);
-    EXPECT_EQ(gap.refinement.bridgesCut, 1) << describe(gap.refinement);
+    ASSERT_TRUE(gap.refinement);
+    EXPECT_EQ(gap.refinement->bridgesCut, 1) << describe(*gap.refinement);
     SkeletonParameters keepEveryLoop = noNarrowLoop;
     keepEveryLoop.graph.refinementLimits.gapStretch = 0;
     EXPECT_EQ(computeCurveSkeleton(scan, keepEveryLoop).quality.topology.cycles, 4);

@@ -48,8 +48,7 @@ void thinAndEmbed(const NormalizedCloud& cloud, const OneRings& rings, const Poi
     const double nodeSpacing = radius / cloud.scale;
     const PointList points = inputPoints(cloud);
     // Re-centring first: refinement judges limbs by the nodes' tubes, which on one-sided
-    // parts are only right once the nodes are on the axis (bench_robustness: the ring
-    // scanned from one view loses its spur).
+    // parts are only right once the nodes are on the axis.
     RecenteringReport recentering;
     if (parameters.recentre) recentering = recentreOneSidedNodes(result.skeleton, points);
     RefinementReport refinement;
@@ -73,20 +72,13 @@ void thinAndEmbed(const NormalizedCloud& cloud, const OneRings& rings, const Poi
     // A re-centred node is off its points' centre by design, not outside the shape.
     std::vector<int>& outside = result.quality.nodesOutside;
     for (int moved : recentering.nodes) outside.erase(std::remove(outside.begin(), outside.end(), moved), outside.end());
-    result.quality.recentred = parameters.recentre;
-    result.quality.recentering = recentering;
-    result.quality.refined = parameters.refine;
-    result.quality.refinement = refinement;
-    result.quality.gapsBridged = parameters.gapLimit > 0;
-    result.quality.gapBridging = bridging;
-    result.quality.tipsExtended = parameters.extendTips;
-    result.quality.tipExtension = extension;
-    const ContractionResult& c = result.contraction;
-    result.quality.stopReason = c.stopReason;
-    result.quality.iterations = int(c.iterations.size());
-    result.quality.extentRatio = c.iterations.empty() ? 1.0 : c.iterations.back().extentRatio;
-    result.quality.denoisingPasses = c.denoisingPasses;
-    result.quality.surfaceNoise = c.surfaceNoise;
+    if (parameters.recentre) result.quality.recentering = recentering;
+    if (parameters.refine) result.quality.refinement = refinement;
+    if (parameters.gapLimit > 0) result.quality.gapBridging = bridging;
+    if (parameters.extendTips) result.quality.tipExtension = extension;
+    if (result.contraction.stopReason != StopReason::NotStopped) {
+        result.quality.contraction = result.contraction.outcome();
+    }
     result.seconds.finishing = stage.seconds();
 }
 

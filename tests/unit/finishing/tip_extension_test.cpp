@@ -40,7 +40,8 @@ TEST(TipExtension, ReachesTheEndsOfACappedTube) {
     const SkeletonResult extended = computeCurveSkeleton(cloud);
     ASSERT_EQ(analyseTopology(short_.skeleton).tips, 2);
     ASSERT_EQ(analyseTopology(extended.skeleton).tips, 2);
-    EXPECT_EQ(extended.quality.tipExtension.extendedTips, 2);
+    ASSERT_TRUE(extended.quality.tipExtension);
+    EXPECT_EQ(extended.quality.tipExtension->extendedTips, 2);
     EXPECT_EQ(invariantViolation(extended.skeleton), "");
 
     const TipEnds before = tipEnds(short_.skeleton), after = tipEnds(extended.skeleton);
@@ -63,7 +64,8 @@ TEST(TipExtension, StopsAtTheEndsOfANoisyTubeNotAtItsFarthestPoints) {
     ASSERT_GT(highest, 1.1 + 0.05);
     const SkeletonResult result = computeCurveSkeleton(cloud);
     ASSERT_EQ(analyseTopology(result.skeleton).tips, 2);
-    EXPECT_EQ(result.quality.tipExtension.extendedTips, 2);
+    ASSERT_TRUE(result.quality.tipExtension);
+    EXPECT_EQ(result.quality.tipExtension->extendedTips, 2);
     const TipEnds ends = tipEnds(result.skeleton);
     EXPECT_NEAR(ends.low, -0.1, 0.02);
     EXPECT_NEAR(ends.high, 1.1, 0.02);

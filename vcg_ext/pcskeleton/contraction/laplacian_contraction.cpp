@@ -205,6 +205,16 @@ void LaplacianContraction::iterateToEnd(const ProgressCallback& progress) {
     }
 }
 
+ContractionOutcome ContractionResult::outcome() const {
+    ContractionOutcome outcome;
+    outcome.stopReason = stopReason;
+    outcome.iterations = int(iterations.size());
+    outcome.extentRatio = iterations.empty() ? 1.0 : iterations.back().extentRatio;
+    outcome.denoisingPasses = denoisingPasses;
+    outcome.surfaceNoise = surfaceNoise;
+    return outcome;
+}
+
 ContractionResult LaplacianContraction::result() const {
     ContractionResult result;
     result.contracted = contractedPoints();

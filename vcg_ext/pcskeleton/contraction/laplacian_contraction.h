@@ -66,6 +66,15 @@ struct IterationReport {
     double seconds = 0.0;
 };
 
+// How a contraction ended: what the quality report tells of it.
+struct ContractionOutcome {
+    StopReason stopReason = StopReason::NotStopped;
+    int iterations = 0;
+    double extentRatio = 1.0;  // mean 1-ring size at the end, relative to the start
+    int denoisingPasses = 0;   // of the copy whose 1-rings were contracted (point_denoising.h)
+    double surfaceNoise = -1;  // measured for the automatic choice, else -1
+};
+
 struct ContractionResult {
     PointList contracted;  // one per input point, in the input's frame and order
     std::vector<IterationReport> iterations;
@@ -75,6 +84,8 @@ struct ContractionResult {
     double neighbourhoodSeconds = 0.0;
     int denoisingPasses = 0;
     double surfaceNoise = -1;  // measured for the automatic choice, else -1
+
+    ContractionOutcome outcome() const;
 };
 
 // What the contraction starts from: the normalised cloud (outliers set aside), the

@@ -14,8 +14,8 @@ namespace {
 
 constexpr double kUncontractedRadiusShare = 1.0;
 constexpr double kUncontractedShareWarning = 0.01;
-// Uniform outliers of 5% of the points are found at about two thirds (bench_robustness
-// --outliers): more than this share set aside suggests real data taken for outliers.
+// More than this share set aside suggests real data taken for outliers: uniform outliers
+// are found only in part (docs/benchmarks.md#measurements-behind-the-constants).
 constexpr double kOutlierShareWarning = 0.05;
 constexpr double kOneSidedness = 0.8;
 constexpr int kMinimumPointsForSideCheck = 4;
@@ -27,8 +27,7 @@ std::string percent(double share) {
 }
 
 // Points whose contracted position is no closer to the skeleton than the surface is:
-// farther from the nearest bone than the radius there. (Well contracted clouds stay
-// under 0.25 radii on tubes; thick bodies leave up to 1% of their points past 0.9.)
+// farther from the nearest bone than the radius there (docs/benchmarks.md#measurements-behind-the-constants).
 std::size_t countUncontracted(const SkeletonGraph& skeleton, const NormalizedCloud& cloud, const PointList& contracted) {
     if (skeleton.nodeCount() == 0) return cloud.inputSize() - cloud.outliers.size();
     const SkeletonDistance distance(skeleton);
@@ -115,6 +114,7 @@ std::vector<QualityWarning> SkeletonQuality::warnings() const {
     const auto add = [&w](Kind kind, std::string description, std::vector<Remedy> remedies) {
         w.push_back({kind, Problem{std::move(description), std::move(remedies)}});
     };
+    const StopReason stopReason = contraction ? contraction->stopReason : StopReason::NotStopped;
     if (stopReason == StopReason::IterationLimit) {
         add(Kind::IterationLimit, "Contraction stopped at the iteration limit before converging",
             {Remedy::raise(Parameter::MaxIterations), Remedy::raise(Parameter::ContractionScale)});
@@ -186,18 +186,20 @@ std::vector<QualityWarning> SkeletonQuality::warnings() const {
 std::string describeFindings(const SkeletonQuality& q) {
     std::ostringstream s;
     s << "Skeleton: " << describe(q.topology) << "; node spacing " << std::setprecision(3) << q.nodeSpacing << ".\n";
-    if (q.stopReason == StopReason::NotStopped) {
+    const ContractionOutcome contraction = q.contraction.value_or(ContractionOutcome{});
+    if (!q.contraction) {
         s << "Contraction: thinned from saved contracted points.\n";
     } else {
-        s << "Contraction: " << counted(std::size_t(q.iterations), "iteration", "iterations") << ", "
-          << describe(q.stopReason) << "; mean 1-ring size " << percent(q.extentRatio) << " of the initial.\n";
+        s << "Contraction: " << counted(std::size_t(contraction.iterations), "iteration", "iterations") << ", "
+          << describe(contraction.stopReason) << "; mean 1-ring size " << percent(contraction.extentRatio)
+          << " of the initial.\n";
     }
     s << "Denoising: ";
-    if (q.denoisingPasses == 0) s << "none";
-    else s << counted(std::size_t(q.denoisingPasses), "pass", "passes") << " on the contracted copy";
-    if (q.surfaceNoise >= 0) {
-        s << " (automatic: surface noise " << std::setprecision(2) << q.surfaceNoise
-          << (q.denoisingPasses > 0 ? ", a noisy cloud)" : ", a clean cloud)");
+    if (contraction.denoisingPasses == 0) s << "none";
+    else s << counted(std::size_t(contraction.denoisingPasses), "pass", "passes") << " on the contracted copy";
+    if (contraction.surfaceNoise >= 0) {
+        s << " (automatic: surface noise " << std::setprecision(2) << contraction.surfaceNoise
+          << (contraction.denoisingPasses > 0 ? ", a noisy cloud)" : ", a clean cloud)");
     }
     s << ".\n";
     if (q.inputPoints > q.points) {
@@ -218,19 +220,20 @@ std::string describeFindings(const SkeletonQuality& q) {
     s << counted(q.outliers, "outlier", "outliers") << " set aside (no node); " << q.uncontractedPoints
       << " did not contract.\n";
     s << "Tip extension: ";
-    if (!q.tipsExtended) s << "off.\n";
-    else if (q.tipExtension.extendedTips == 0) s << "no limb to extend.\n";
-    else s << counted(std::size_t(q.tipExtension.extendedTips), "limb", "limbs") << " extended, by "
-           << std::setprecision(3) << q.tipExtension.meanLength << " on average, at most "
-           << q.tipExtension.longest << ".\n";
+    if (!q.tipExtension) s << "off.\n";
+    else if (q.tipExtension->extendedTips == 0) s << "no limb to extend.\n";
+    else s << counted(std::size_t(q.tipExtension->extendedTips), "limb", "limbs") << " extended, by "
+           << std::setprecision(3) << q.tipExtension->meanLength << " on average, at most "
+           << q.tipExtension->longest << ".\n";
     s << "Re-centring: ";
-    if (!q.recentred) s << "off.\n";
-    else s << counted(std::size_t(q.recentering.recentredNodes), "node", "nodes") << " of one-sided parts moved"
-           << (q.recentering.recentredNodes ? ", by " : "") << std::setprecision(3);
-    if (q.recentred && q.recentering.recentredNodes) s << q.recentering.meanShift << " on average";
-    if (q.recentred) s << ".\n";
-    s << "Refinement: " << (q.refined ? describe(q.refinement) : std::string("off")) << ".\n";
-    s << "Gaps in the data: " << (q.gapsBridged ? describe(q.gapBridging) : std::string("off")) << ".";
+    if (!q.recentering) s << "off.\n";
+    else {
+        s << counted(std::size_t(q.recentering->recentredNodes), "node", "nodes") << " of one-sided parts moved";
+        if (q.recentering->recentredNodes) s << ", by " << std::setprecision(3) << q.recentering->meanShift << " on average";
+        s << ".\n";
+    }
+    s << "Refinement: " << (q.refinement ? describe(*q.refinement) : std::string("off")) << ".\n";
+    s << "Gaps in the data: " << (q.gapBridging ? describe(*q.gapBridging) : std::string("off")) << ".";
     return s.str();
 }
 

@@ -21,6 +21,7 @@
 #include "pcskeleton/finishing/tip_extension.h"
 #include "pcskeleton/core/advice.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -47,12 +48,8 @@ struct SkeletonQuality {
     SkeletonTopology topology;
     double nodeSpacing = 0.0;  // the thinning radius, input units
 
-    // Contraction; stopReason NotStopped means it is unknown (thinned from a saved layer).
-    StopReason stopReason = StopReason::NotStopped;
-    int iterations = 0;
-    double extentRatio = 1.0;  // mean 1-ring size at the end, relative to the start
-    int denoisingPasses = 0;   // of the copy whose 1-rings were contracted (point_denoising.h)
-    double surfaceNoise = -1;  // measured for the automatic choice, else -1
+    // Empty when unknown: thinned from a saved layer of contracted points.
+    std::optional<ContractionOutcome> contraction;
 
     std::size_t points = 0;         // contracted: all of the input, or its subsample (multi-resolution)
     std::size_t inputPoints = 0;    // of the input; more than `points` when a subsample was contracted
@@ -71,14 +68,11 @@ struct SkeletonQuality {
     // sought only when refinement, which opens them, did not run.
     std::vector<std::vector<int>> contactLoops;
 
-    bool recentred = false;
-    RecenteringReport recentering;
-    bool refined = false;
-    RefinementReport refinement;
-    bool gapsBridged = false;
-    GapBridgingReport gapBridging;
-    bool tipsExtended = false;
-    TipExtensionReport tipExtension;
+    // The finishing steps; each empty when it was off.
+    std::optional<RecenteringReport> recentering;
+    std::optional<RefinementReport> refinement;
+    std::optional<GapBridgingReport> gapBridging;
+    std::optional<TipExtensionReport> tipExtension;
 
     // One per problem found, each with what to change; empty when none.
     std::vector<QualityWarning> warnings() const;
