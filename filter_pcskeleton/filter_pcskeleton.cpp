@@ -463,7 +463,7 @@ bool FilterPCSkeletonPlugin::contractPointCloud(MeshDocument& md, const RichPara
 
 void FilterPCSkeletonPlugin::addSkeletonLayers(MeshDocument& md, const MeshModel& source, const LayerPoints& input,
                                                const pcskeleton::SkeletonResult& result, bool addSegments) {
-    if (addSegments) addSegmentsLayer(md, source, input, result.skeleton, derivedLabel(source, "segments"));
+    if (addSegments) addSegmentsLayer(md, input, result.skeleton, derivedLabel(source, "segments"));
     const QString label = derivedLabel(source, "skeleton");
     addSkeletonLayer(md, source, input, result.skeleton, label);
     writeLog(*this, "Skeleton '%s', quality report:", qUtf8Printable(label));

@@ -22,7 +22,7 @@ namespace {
 
 CMeshO::CoordType toMeshLab(const Point& p) { return CMeshO::CoordType(p.x(), p.y(), p.z()); }
 
-MeshModel* addPointCopy(MeshDocument& md, const MeshModel& source, const LayerPoints& input,
+MeshModel* addPointCopy(MeshDocument& md, const LayerPoints& input,
                         const PointList& positions, const QString& label) {
     MeshModel* layer = md.addNewMesh("", label, true);
     CMeshO& out = layer->cm;
@@ -124,7 +124,7 @@ QString derivedLabel(const MeshModel& source, const QString& what) {
 
 MeshModel* addPointLayer(MeshDocument& md, const MeshModel& source, const LayerPoints& input,
                          const PointList& positions, const QString& label) {
-    MeshModel* layer = addPointCopy(md, source, input, positions, label);
+    MeshModel* layer = addPointCopy(md, input, positions, label);
     if (source.hasDataMask(MeshModel::MM_VERTCOLOR)) {
         layer->updateDataMask(MeshModel::MM_VERTCOLOR);
         for (std::size_t i = 0; i < input.vertexIndex.size(); ++i) {
@@ -166,9 +166,9 @@ void writeSkeletonLayer(MeshModel& layer, const SkeletonGraph& skeleton) {
     updateBoxAndNormals(layer);
 }
 
-MeshModel* addSegmentsLayer(MeshDocument& md, const MeshModel& source, const LayerPoints& input,
+MeshModel* addSegmentsLayer(MeshDocument& md, const LayerPoints& input,
                             const SkeletonGraph& skeleton, const QString& label) {
-    MeshModel* layer = addPointCopy(md, source, input, input.points, label);
+    MeshModel* layer = addPointCopy(md, input, input.points, label);
     layer->updateDataMask(MeshModel::MM_VERTCOLOR);
     auto node = Allocator::GetPerVertexAttribute<int>(layer->cm, kNodeAttribute);
     const int nodeCount = std::max<int>(1, int(skeleton.nodeCount()));

@@ -48,7 +48,7 @@ MeshModel* addSkeletonLayer(MeshDocument& md, const MeshModel& source, const Lay
                             const SkeletonGraph& skeleton, const QString& label);
 
 // A copy of the source points, each coloured by its node and carrying pcs_node.
-MeshModel* addSegmentsLayer(MeshDocument& md, const MeshModel& source, const LayerPoints& input,
+MeshModel* addSegmentsLayer(MeshDocument& md, const LayerPoints& input,
                             const SkeletonGraph& skeleton, const QString& label);
 
 // The layer a skeleton (or contracted) layer was computed from, if it is still open
