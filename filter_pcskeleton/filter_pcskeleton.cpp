@@ -201,14 +201,11 @@ QString FilterPCSkeletonPlugin::filterInfo(int filter) const {
                 "through a denoised copy (untick 'Detect outliers' and set 'Denoising passes' to 0 for the paper's "
                 "contraction exactly).") + kPaperReference;
         case FP_COMPUTE_SKELETON:
+            // Short: with every field of MeshLab 2020.09's dialog it must fit a 1024-pixel screen.
             return QString(
-                "Computes the curve skeleton of the current layer's points: Laplacian contraction, then "
-                "farthest-point sampling of the contracted points, connection through the points' 1-rings and "
-                "collapse of every triangle (the shape's loops survive), then each node moves to the centre of "
-                "its points, and limbs are extended to their ends. Adds a skeleton layer (vertices = nodes, "
-                "edges = bones, radius in vertex quality and in the attribute pcs_radius), and logs a quality "
-                "report: topology, convergence, and warnings naming the parameter to change. The input layer is "
-                "not changed. Save the skeleton with Export Skeleton: MeshLab's own PLY export drops edges.") +
+                "Computes the curve skeleton of the current layer's points by Laplacian contraction and "
+                "thinning. Adds a skeleton layer (radius in vertex quality) and logs a quality report; the input "
+                "is not changed. Save it with Export Skeleton (MeshLab's PLY export drops edges).") +
                 kPaperReference;
         case FP_SKELETON_FROM_CONTRACTED:
             return QString(
