@@ -354,6 +354,7 @@ const char* warningKind(QualityWarning::Kind kind) {
         case QualityWarning::Kind::PartsWithoutBone: return "parts_without_bone";
         case QualityWarning::Kind::IsolatedNodes: return "isolated_nodes";
         case QualityWarning::Kind::NodesOutside: return "nodes_outside";
+        case QualityWarning::Kind::NodesAwayFromData: return "nodes_away_from_data";
         case QualityWarning::Kind::Spurs: return "spurs";
         case QualityWarning::Kind::SpuriousCycles: return "spurious_cycles";
         case QualityWarning::Kind::ContactLoops: return "contact_loops";

@@ -49,8 +49,9 @@ void thinAndEmbed(const NormalizedCloud& cloud, const OneRings& rings, const Poi
     const PointList points = inputPoints(cloud);
     // Re-centring first: refinement judges limbs by the nodes' tubes, which on one-sided
     // parts are only right once the nodes are on the axis.
+    const DataSupport support(points, nodeSpacing);
     RecenteringReport recentering;
-    if (parameters.recentre) recentering = recentreOneSidedNodes(result.skeleton, points);
+    if (parameters.recentre) recentering = recentreOneSidedNodes(result.skeleton, points, support);
     RefinementReport refinement;
     if (parameters.refine) {
         refinement = refineSkeleton(result.skeleton, points, nodeSpacing, parameters.refinementLimits);
@@ -59,7 +60,7 @@ void thinAndEmbed(const NormalizedCloud& cloud, const OneRings& rings, const Poi
         recentering.nodes.erase(std::unique(recentering.nodes.begin(), recentering.nodes.end()), recentering.nodes.end());
     }
     TipExtensionReport extension;
-    if (parameters.extendTips) extension = extendTips(result.skeleton, points, nodeSpacing);
+    if (parameters.extendTips) extension = extendTips(result.skeleton, points, nodeSpacing, support);
     // After tip extension: an extended limb ends at the edge of its data, so the bridge spans
     // the gap in the data and nothing more.
     const GapBridgingReport bridging = bridgeGaps(result.skeleton, nodeSpacing, parameters.gapLimit);
@@ -69,6 +70,7 @@ void thinAndEmbed(const NormalizedCloud& cloud, const OneRings& rings, const Poi
             result.quality.contactLoops.push_back(std::move(loop.cycle));
         }
     }
+    result.quality.nodesAwayFromData = support.unsupportedNodes(result.skeleton);
     // A re-centred node is off its points' centre by design, not outside the shape.
     std::vector<int>& outside = result.quality.nodesOutside;
     for (int moved : recentering.nodes) outside.erase(std::remove(outside.begin(), outside.end(), moved), outside.end());

@@ -34,7 +34,7 @@ TEST(NodeRecentering, NodesOfAHalfTubeMoveOntoItsAxisWithItsRadius) {
     PointList points;
     SkeletonGraph g = nodesOfAnArc(M_PI, points);
     ASSERT_GT(std::hypot(g.nodes[1].y(), g.nodes[1].z()), 0.1) << "the centroid lies on the visible wall";
-    const RecenteringReport report = recentreOneSidedNodes(g, points);
+    const RecenteringReport report = recentreOneSidedNodes(g, points, DataSupport(points, 1.0));
     EXPECT_EQ(report.recentredNodes, 3);
     for (std::size_t n = 0; n < 3; ++n) {
         EXPECT_NEAR(std::hypot(g.nodes[n].y(), g.nodes[n].z()), 0.0, 1e-6) << "node " << n;
@@ -46,7 +46,7 @@ TEST(NodeRecentering, NodesSurroundedByTheirPointsStay) {
     PointList points;
     SkeletonGraph g = nodesOfAnArc(2 * M_PI, points);
     const SkeletonGraph before = g;
-    EXPECT_EQ(recentreOneSidedNodes(g, points).recentredNodes, 0);
+    EXPECT_EQ(recentreOneSidedNodes(g, points, DataSupport(points, 1.0)).recentredNodes, 0);
     EXPECT_EQ(g.nodes, before.nodes);
     EXPECT_EQ(g.radii, before.radii);
 }

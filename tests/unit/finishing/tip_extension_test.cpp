@@ -73,12 +73,12 @@ TEST(TipExtension, StopsAtTheEndsOfANoisyTubeNotAtItsFarthestPoints) {
 
 TEST(TipExtension, LeavesLoopsAndSpursAlone) {
     SkeletonGraph ring = shapes::curveSkeleton(shapes::circle(Point::Zero(), 1.0, 24), 0.3);
-    EXPECT_EQ(extendTips(ring, {}, kSpacing).extendedTips, 0);
+    EXPECT_EQ(extendTips(ring, {}, kSpacing, DataSupport({}, kSpacing)).extendedTips, 0);
     SkeletonGraph g = straightChain();
     const int spur = addNode(g, Point(0.5, 0.1, 0), 5);
     PointList points{Point(0.5, 0.5, 0)};  // far along the spur
     g.pointNode = {spur};
     const std::size_t nodes = g.nodeCount();
-    extendTips(g, points, kSpacing);
+    extendTips(g, points, kSpacing, DataSupport(points, kSpacing));
     EXPECT_EQ(g.nodeCount(), nodes) << "a spur (or an end without points) is not extended";
 }

@@ -13,6 +13,11 @@ constexpr int kMinimumPoints = 8;
 // half circle gives 0.64. Below this the centroid is already the centre.
 constexpr double kOneSided = 0.3;
 constexpr double kMaximumResidual = 0.2;  // RMS distance to the circle, share of its radius
+// Points spread over an arc of angle a leave a mean unit vector of length sin(a/2)/(a/2),
+// seen from the arc's centre: 0.64 for a half circle, 0.90 for a quarter. A slightly curved
+// sheet (a leaf, a plate) fits a huge circle over a small arc, whose centre is far from any
+// data: above this the points are a sheet, not a part of a tube's wall.
+constexpr double kLargestArcResultant = 0.9;
 
 struct Circle {
     Eigen::Vector2d centre;
@@ -40,7 +45,7 @@ bool fitCircle(const std::vector<Eigen::Vector2d>& q, Circle& circle) {
 
 }  // namespace
 
-RecenteringReport recentreOneSidedNodes(SkeletonGraph& skeleton, const PointList& points) {
+RecenteringReport recentreOneSidedNodes(SkeletonGraph& skeleton, const PointList& points, const DataSupport& support) {
     RecenteringReport report;
     const std::vector<std::vector<int>> adjacent = adjacencyLists(skeleton.nodeCount(), skeleton.edges);
     const std::vector<std::vector<int>> members = pointsOfNodes(skeleton);
@@ -64,9 +69,16 @@ RecenteringReport recentreOneSidedNodes(SkeletonGraph& skeleton, const PointList
         for (const Eigen::Vector2d& q : across) {
             if ((q - circle.centre).norm() > 0.0) side += (q - circle.centre).normalized();
         }
-        if (side.norm() < kOneSided * double(across.size())) continue;  // surrounded: the centroid is right
-        if (circle.centre.norm() > circle.radius) continue;             // the node would leave its tube
-        skeleton.nodes[n] = before[n] + circle.centre.x() * u + circle.centre.y() * v;
+        const double arcResultant = side.norm() / double(across.size());
+        if (arcResultant < kOneSided) continue;             // surrounded: the centroid is right
+        if (arcResultant > kLargestArcResultant) continue;  // a sheet, not a tube
+        if (circle.centre.norm() > circle.radius) continue; // the node would leave its tube
+        const Point centre = before[n] + circle.centre.x() * u + circle.centre.y() * v;
+        if (!support.supports(centre, circle.radius, members[n])) {
+            ++report.refused;
+            continue;
+        }
+        skeleton.nodes[n] = centre;
         skeleton.radii[n] = circle.radius;
         shifts += circle.centre.norm();
         ++report.recentredNodes;

@@ -6,6 +6,7 @@
 // when the fit is poor, or the points surround the node anyway, it stays where it is.
 #pragma once
 
+#include "pcskeleton/finishing/data_support.h"
 #include "pcskeleton/skeleton/skeleton_graph.h"
 
 #include <vector>
@@ -16,10 +17,12 @@ struct RecenteringReport {
     int recentredNodes = 0;
     std::vector<int> nodes;  // the nodes moved (numbered as in the finished skeleton)
     double meanShift = 0.0;  // input units
+    int refused = 0;         // moves that would have taken a node away from its data (data_support.h)
 };
 
 // `points` are the input points in the input's frame, `skeleton.pointNode` their nodes.
-// Only nodes on a bone (one or two neighbours) with enough points are considered.
-RecenteringReport recentreOneSidedNodes(SkeletonGraph& skeleton, const PointList& points);
+// Only nodes on a bone (one or two neighbours) with enough points are considered, and a
+// node moves only where it stays with its data (`support`, made on the same points).
+RecenteringReport recentreOneSidedNodes(SkeletonGraph& skeleton, const PointList& points, const DataSupport& support);
 
 }  // namespace pcskeleton

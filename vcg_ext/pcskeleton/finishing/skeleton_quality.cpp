@@ -20,6 +20,13 @@ constexpr double kOutlierShareWarning = 0.05;
 constexpr double kOneSidedness = 0.8;
 constexpr int kMinimumPointsForSideCheck = 4;
 
+// "; 2 moves refused (they would have taken a node away from its data)", or nothing.
+std::string refusals(int count, const char* what) {
+    if (count == 0) return "";
+    return "; " + counted(std::size_t(count), std::string(what)) +
+           " refused (" + (count == 1 ? "it" : "they") + " would have taken a node away from its data)";
+}
+
 std::string percent(double share) {
     std::ostringstream s;
     s << std::setprecision(share < 0.1 ? 2 : 3) << 100.0 * share << "%";
@@ -159,6 +166,14 @@ std::vector<QualityWarning> SkeletonQuality::warnings() const {
                 "outside it",
             {Remedy::lower(Parameter::NodeSpacing)});
     }
+    if (!nodesAwayFromData.empty()) {
+        add(Kind::NodesAwayFromData,
+            counted(nodesAwayFromData.size(), "node lies away from its data", "nodes lie away from their data") +
+                " (first: node " +
+                std::to_string(nodesAwayFromData.front()) +
+                "), farther from its nearest point than its radius allows or outside the points' bounding box",
+            {Remedy::turnOff(Parameter::Recentre), Remedy::take(Step::DeleteNodes)});
+    }
     if (!spurs.empty()) {
         add(Kind::Spurs,
             counted(spurs.size(), "short spur", "short spurs") +
@@ -224,13 +239,13 @@ std::string describeFindings(const SkeletonQuality& q) {
     else if (q.tipExtension->extendedTips == 0) s << "no limb to extend.\n";
     else s << counted(std::size_t(q.tipExtension->extendedTips), "limb", "limbs") << " extended, by "
            << std::setprecision(3) << q.tipExtension->meanLength << " on average, at most "
-           << q.tipExtension->longest << ".\n";
+           << q.tipExtension->longest << refusals(q.tipExtension->refused, "extension") << ".\n";
     s << "Re-centring: ";
     if (!q.recentering) s << "off.\n";
     else {
         s << counted(std::size_t(q.recentering->recentredNodes), "node", "nodes") << " of one-sided parts moved";
         if (q.recentering->recentredNodes) s << ", by " << std::setprecision(3) << q.recentering->meanShift << " on average";
-        s << ".\n";
+        s << refusals(q.recentering->refused, "move") << ".\n";
     }
     s << "Refinement: " << (q.refinement ? describe(*q.refinement) : std::string("off")) << ".\n";
     s << "Gaps in the data: " << (q.gapBridging ? describe(*q.gapBridging) : std::string("off")) << ".";

@@ -10,6 +10,7 @@
 // - nodes outside the shape: all of a node's points lie on one side of it (the mean of
 //   the unit vectors towards them is longer than 0.8), as when the centre of a bent part's
 //   points falls outside the part;
+// - nodes away from their data (data_support.h), which no step should leave;
 // - spurs and spurious cycles (criteria in skeleton_structure.h).
 #pragma once
 
@@ -36,6 +37,7 @@ struct QualityWarning {
         PartsWithoutBone,
         IsolatedNodes,
         NodesOutside,
+        NodesAwayFromData,
         Spurs,
         SpuriousCycles,
         ContactLoops,
@@ -62,6 +64,9 @@ struct SkeletonQuality {
     std::size_t pointsWithoutBone = 0;
     std::size_t pointsOfIsolatedNodes = 0;  // points owned by nodes without a bone
     std::vector<int> nodesOutside;  // nodes with all their points on one side
+    // Nodes of the finished skeleton that do not stay with their data (data_support.h). The
+    // finishing steps refuse such moves, so this stays empty unless a step has a bug.
+    std::vector<int> nodesAwayFromData;
     std::vector<std::vector<int>> spurs;           // node paths, tip first
     std::vector<std::vector<int>> spuriousCycles;  // node cycles
     // Narrow loops whose bone crosses the surface (skeleton_structure.h, contactLoops),

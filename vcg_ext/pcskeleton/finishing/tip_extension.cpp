@@ -52,7 +52,8 @@ std::vector<int> limbEndNodes(const SkeletonGraph& skeleton, const Limb& limb, d
 
 }  // namespace
 
-TipExtensionReport extendTips(SkeletonGraph& skeleton, const PointList& points, double nodeSpacing) {
+TipExtensionReport extendTips(SkeletonGraph& skeleton, const PointList& points, double nodeSpacing,
+                              const DataSupport& support) {
     const std::vector<std::vector<int>> pointsOf = pointsOfNodes(skeleton);
     TipExtensionReport report;
     for (const Limb& limb : tipLimbs(skeleton)) {
@@ -99,8 +100,14 @@ TipExtensionReport extendTips(SkeletonGraph& skeleton, const PointList& points, 
         thickness = endPoints > 0 ? thickness / endPoints : 0.0;
         if (!isPositiveFinite(thickness)) thickness = 0.5 * skeleton.radii[tip];
 
-        skeleton.nodes.push_back(tipPosition + reach * direction);
-        skeleton.radii.push_back(std::min(thickness, skeleton.radii[tip]));
+        const Point end = tipPosition + reach * direction;
+        const double endRadius = std::min(thickness, skeleton.radii[tip]);
+        if (!support.supports(end, endRadius, {})) {
+            ++report.refused;
+            continue;
+        }
+        skeleton.nodes.push_back(end);
+        skeleton.radii.push_back(endRadius);
         skeleton.edges.push_back({tip, int(skeleton.nodeCount()) - 1});
         ++report.extendedTips;
         report.meanLength += reach;

@@ -12,6 +12,7 @@
 // quarter of the tip's radius before the end.
 #pragma once
 
+#include "pcskeleton/finishing/data_support.h"
 #include "pcskeleton/skeleton/skeleton_graph.h"
 
 namespace pcskeleton {
@@ -19,11 +20,14 @@ namespace pcskeleton {
 struct TipExtensionReport {
     int extendedTips = 0;
     double meanLength = 0.0, longest = 0.0;  // of the added bones, input units
+    int refused = 0;  // extensions whose end would have left the data (data_support.h)
 };
 
 // `points` are the input points (skeleton.pointNode's frame and order); `nodeSpacing` is
 // the thinning radius in input units. Limbs are extended when they would grow by more
-// than a tenth of the node spacing.
-TipExtensionReport extendTips(SkeletonGraph& skeleton, const PointList& points, double nodeSpacing);
+// than a tenth of the node spacing, and only when the new end stays with the data
+// (`support`, made on the same points).
+TipExtensionReport extendTips(SkeletonGraph& skeleton, const PointList& points, double nodeSpacing,
+                              const DataSupport& support);
 
 }  // namespace pcskeleton

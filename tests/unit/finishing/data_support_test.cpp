@@ -1,0 +1,133 @@
+// A node stays with its data: the invariant itself, and known answers where re-centring
+// used to break it: sheets seen from one side (a flat disc, a slightly curved plate, the
+// paper's corn plant) keep every node on the sheet, while a half tube is still re-centred.
+#include <pcskeleton/finishing/data_support.h>
+#include <pcskeleton/curve_skeleton.h>
+#include <pcskeleton/io/point_cloud_io.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+using namespace pcskeleton;
+
+namespace {
+
+// Distance from `p` to the nearest of `points`, by brute force.
+double nearestDistance(const Point& p, const PointList& points) {
+    double nearest = INFINITY;
+    for (const Point& q : points) nearest = std::min(nearest, (q - p).norm());
+    return nearest;
+}
+
+// Every node of the skeleton inside the points' bounding box (grown by the support's slack),
+// within `share` of the diagonal of some point (share 0: not checked), and none reported
+// away from its data.
+void expectNodesOnTheData(const SkeletonResult& result, const PointList& points, double share) {
+    Eigen::AlignedBox3d box = boundingBox(points);
+    const double diagonal = box.diagonal().norm();
+    const double slack = kSupportSlack * result.quality.nodeSpacing;
+    box.min().array() -= slack;
+    box.max().array() += slack;
+    for (std::size_t n = 0; n < result.skeleton.nodeCount(); ++n) {
+        const Point& node = result.skeleton.nodes[n];
+        EXPECT_TRUE(box.contains(node)) << "node " << n << " outside the points' bounding box";
+        if (share > 0) EXPECT_LE(nearestDistance(node, points), share * diagonal) << "node " << n;
+    }
+    EXPECT_TRUE(result.quality.nodesAwayFromData.empty()) << describe(result.quality);
+}
+
+// A sheet of n points: (x, y) uniform in [0, length] x [-width/2, width/2], bent about the
+// x axis onto a circle of radius `bend` (0: flat).
+PointList sheet(std::size_t n, double length, double width, double bend, std::uint32_t seed = 1) {
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<double> along(0, length), across(-width / 2, width / 2);
+    PointList points;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double x = along(random), y = across(random);
+        if (bend == 0) points.emplace_back(x, y, 0.0);
+        else points.emplace_back(x, bend * std::sin(y / bend), bend * (1 - std::cos(y / bend)));
+    }
+    return points;
+}
+
+}  // namespace
+
+TEST(DataSupport, ANodeNearItsPointsIsSupportedAndOneAwayIsNot) {
+    const PointList points = {Point(0, 0, 0), Point(1, 0, 0), Point(2, 0, 0), Point(1, 1, 0)};
+    const DataSupport support(points, 0.2);  // slack 0.1; the box spans y from -0.1 to 1.1
+    EXPECT_TRUE(support.supports(Point(1, 0.05, 0), 0.0, {1}));
+    EXPECT_TRUE(support.supports(Point(1, 0.5, 0), 0.45, {1}));   // within its radius plus the slack
+    EXPECT_FALSE(support.supports(Point(1, 0.09, 0), 0.0, {0}));  // near a point, but not its own
+    EXPECT_FALSE(support.supports(Point(1, 0.3, 0), 0.1, {1}));
+    EXPECT_FALSE(support.supports(Point(1, 0.5, 0.5), 1.0, {1}));  // outside the bounding box
+    EXPECT_TRUE(support.supports(Point(2.05, 0, 0), 0.0, {}));    // no points of its own: the nearest point
+    EXPECT_FALSE(support.supports(Point(2.15, 0.15, 0), 0.0, {}));
+    EXPECT_FALSE(support.supports(Point(NAN, 0, 0), 1.0, {1}));
+}
+
+TEST(DataSupport, TheUnsupportedNodesOfASkeleton) {
+    const PointList points = {Point(0, 0, 0), Point(0.1, 0, 0), Point(1, 0, 0), Point(1.1, 0, 0)};
+    SkeletonGraph g;
+    g.nodes = {Point(0.05, 0, 0), Point(1.05, 0.8, 0)};
+    g.radii = {0.05, 0.05};
+    g.edges = {{0, 1}};
+    g.pointNode = {0, 0, 1, 1};
+    EXPECT_EQ(DataSupport(points, 0.2).unsupportedNodes(g), std::vector<int>{1});
+}
+
+TEST(DataSupport, AFlatDiscSeenFromOneSideKeepsItsNodesOnIt) {
+    PointList disc;
+    for (const Point& p : sheet(12000, 2.0, 2.0, 0.0)) {
+        if ((p - Point(1, 0, 0)).norm() <= 1.0) disc.push_back(p);
+    }
+    const SkeletonResult result = computeCurveSkeleton(disc);
+    for (std::size_t n = 0; n < result.skeleton.nodeCount(); ++n) {
+        EXPECT_NEAR(result.skeleton.nodes[n].z(), 0.0, 1e-9) << "node " << n << " left the disc's plane";
+    }
+    expectNodesOnTheData(result, disc, 0.025);
+}
+
+TEST(DataSupport, ASlightlyCurvedPlateKeepsItsNodesOnIt) {
+    // 1 wide, bent on a circle of radius 3: an arc of 19 degrees, whose circle's centre is 3
+    // away, as a leaf seen from either side.
+    const PointList plate = sheet(6000, 4.0, 1.0, 3.0);
+    const SkeletonResult result = computeCurveSkeleton(plate);
+    expectNodesOnTheData(result, plate, 0.02);
+    EXPECT_EQ(result.quality.recentering ? result.quality.recentering->recentredNodes : -1, 0);
+}
+
+TEST(DataSupport, TheCornPlantsNodesStayInsideItsCloud) {
+    // The paper's raw scan of a corn plant (Fig. 7j): thin curved leaves with boundaries,
+    // where re-centring used to put nodes up to 3.9% of the diagonal outside the cloud's box.
+    // (Within 2.5% of the diagonal of every point is issue 35's target, not reached yet.)
+    const PointList corn = readPointCloud(PCSKELETON_SCANS_DIR "/corn_v12108.ply");
+    ASSERT_EQ(corn.size(), 12108u);
+    expectNodesOnTheData(computeCurveSkeleton(corn), corn, 0.0);
+}
+
+TEST(DataSupport, TheReportCountsRefusedMovesAndNamesNodesAwayFromTheirData) {
+    SkeletonQuality q;
+    q.recentering = RecenteringReport{};
+    q.recentering->recentredNodes = 3;
+    q.recentering->meanShift = 0.5;
+    q.recentering->refused = 2;
+    q.tipExtension = TipExtensionReport{};
+    q.tipExtension->extendedTips = 1;
+    q.tipExtension->refused = 1;
+    std::string text = describeFindings(q);
+    EXPECT_NE(text.find("Re-centring: 3 nodes of one-sided parts moved, by 0.5 on average; 2 moves refused (they "
+                        "would have taken a node away from its data)."),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find("; 1 extension refused (it would have taken a node away from its data)."), std::string::npos)
+        << text;
+    EXPECT_TRUE(q.warnings().empty());
+    q.nodesAwayFromData = {4, 9};
+    const std::vector<QualityWarning> warnings = q.warnings();
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_EQ(warnings[0].kind, QualityWarning::Kind::NodesAwayFromData);
+    EXPECT_NE(describe(warnings[0].problem).find("2 nodes lie away from their data (first: node 4)"), std::string::npos)
+        << describe(warnings[0].problem);
+}
