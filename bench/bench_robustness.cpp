@@ -72,6 +72,7 @@ namespace {
 
 struct Row {
     int points = 0, cycles = 0, tips = 0, components = 0, warnings = 0;
+    int away = 0;  // nodes away from their data (data_support.h): 0 unless a step has a bug
     double meanDistance = -1, maxDistance = -1, inside = -1;  // -1: not measurable
     double gapBefore = -1, gapAfter = -1;
     double seconds = 0;
@@ -118,7 +119,7 @@ Row measure(const Subject& subject, const Condition& condition, std::size_t n, c
     const auto start = std::chrono::steady_clock::now();
     const SkeletonResult result = computeCurveSkeleton(cloud, parameters);
     SkeletonGraph extended = result.skeleton;
-    extendTips(extended, cloud, result.quality.nodeSpacing);
+    extendTips(extended, cloud, result.quality.nodeSpacing, DataSupport(cloud, result.quality.nodeSpacing));
     Row row;
     row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const SkeletonGraph& skeleton = pipeline.graph.extendTips ? extended : result.skeleton;
@@ -129,6 +130,7 @@ Row measure(const Subject& subject, const Condition& condition, std::size_t n, c
     row.tips = topology.tips;
     row.components = topology.components;
     row.warnings = int(result.quality.warnings().size());
+    row.away = int(DataSupport(cloud, result.quality.nodeSpacing).unsupportedNodes(skeleton).size());
     const std::vector<BoneSample> samples = sampleBones(skeleton, diagonal / 400.0);
     double totalLength = 0.0, insideLength = 0.0, distanceSum = 0.0, maxDistance = 0.0;
     for (const BoneSample& s : samples) {
@@ -165,7 +167,7 @@ std::string number(double value, const char* format = "%.2f") {
 }
 
 struct Tally {
-    int cases = 0, right = 0, gaps = 0;
+    int cases = 0, right = 0, gaps = 0, away = 0;
     double gapBefore = 0, gapAfter = 0, meanDistance = 0, inside = 0;
     int distances = 0, insides = 0;
 };
@@ -300,9 +302,10 @@ int main(int argc, char** argv) {
     std::printf("Skeleton robustness, %s pipeline, %zu points per clean sample, %ld cores. Distances and gaps in %% of "
                 "the bounding-box diagonal.\n",
                 paper ? "the paper's" : "the default", n, sysconf(_SC_NPROCESSORS_ONLN));
-    std::printf("%-24s %-16s %6s %6s %6s %5s %6s %6s %7s %13s %4s %6s\n", "shape", "condition", "points", "cycles",
-                "tips", "parts", "mean d", "max d", "inside", "tip gap", "warn", "time");
-    std::map<std::string, Tally> byCondition;
+    std::printf("%-24s %-16s %6s %6s %6s %5s %6s %6s %7s %13s %4s %4s %6s\n", "shape", "condition", "points",
+                "cycles", "tips", "parts", "mean d", "max d", "inside", "tip gap", "away", "warn", "time");
+    // Per condition, the tuning half ([0]) and the held-out half ([1]).
+    std::map<std::string, std::array<Tally, 2>> byCondition;
     for (const Subject& subject : subjects) {
         if (subject.name.find(onlyShape) == std::string::npos) continue;
         for (const Condition& condition : conditions()) {
@@ -313,13 +316,14 @@ int main(int argc, char** argv) {
                 continue;
             }
             const std::string gap = row.gapBefore < 0 ? "-" : number(row.gapBefore) + "->" + number(row.gapAfter);
-            std::printf("%-24s %-16s %6d %6s %6s %5s %6s %6s %6s%% %13s %4d %5.1fs\n", subject.name.c_str(),
+            std::printf("%-24s %-16s %6d %6s %6s %5s %6s %6s %6s%% %13s %4d %4d %5.1fs\n", subject.name.c_str(),
                         condition.name, row.points, found(row.cycles, subject.cycles).c_str(),
                         found(row.tips, subject.tips).c_str(), found(row.components, subject.components).c_str(),
                         number(row.meanDistance).c_str(), number(row.maxDistance).c_str(),
-                        number(row.inside, "%.0f").c_str(), gap.c_str(), row.warnings, row.seconds);
+                        number(row.inside, "%.0f").c_str(), gap.c_str(), row.away, row.warnings, row.seconds);
             std::fflush(stdout);
-            Tally& t = byCondition[condition.name];
+            Tally& t = byCondition[condition.name][subject.heldOut ? 1 : 0];
+            t.away += row.away;
             ++t.cases;
             t.right += row.cycles == subject.cycles && row.components == subject.components &&
                        (subject.tips == kUnknown || row.tips == subject.tips);
@@ -328,14 +332,20 @@ int main(int argc, char** argv) {
             if (row.inside >= 0) t.inside += row.inside, ++t.insides;
         }
     }
-    std::printf("\nSummary per condition (means over the shapes that have the measure)\n");
-    std::printf("%-16s %13s %8s %8s %15s\n", "condition", "right topology", "mean d", "inside", "tip gap");
-    for (const Condition& condition : conditions()) {
-        const Tally& t = byCondition[condition.name];
-        std::printf("%-16s %9d/%-3d %8s %7s%% %15s\n", condition.name, t.right, t.cases,
-                    number(t.distances ? t.meanDistance / t.distances : -1).c_str(),
-                    number(t.insides ? t.inside / t.insides : -1, "%.0f").c_str(),
-                    t.gaps ? (number(t.gapBefore / t.gaps) + "->" + number(t.gapAfter / t.gaps)).c_str() : "-");
+    std::printf("\nSummary per condition (means over the shapes that have the measure; away: nodes away from their\n"
+                "data, in all). Defaults are chosen on the tuning half; the held-out half tells whether they generalise.\n");
+    for (int half : {0, 1}) {
+        std::printf("%s half\n", half == 0 ? "Tuning" : "Held-out");
+        std::printf("%-16s %13s %8s %8s %15s %5s\n", "condition", "right topology", "mean d", "inside", "tip gap", "away");
+        for (const Condition& condition : conditions()) {
+            const Tally& t = byCondition[condition.name][half];
+            if (t.cases == 0) continue;
+            std::printf("%-16s %9d/%-3d %8s %7s%% %15s %5d\n", condition.name, t.right, t.cases,
+                        number(t.distances ? t.meanDistance / t.distances : -1).c_str(),
+                        number(t.insides ? t.inside / t.insides : -1, "%.0f").c_str(),
+                        t.gaps ? (number(t.gapBefore / t.gaps) + "->" + number(t.gapAfter / t.gaps)).c_str() : "-",
+                        t.away);
+        }
     }
     return 0;
 }

@@ -20,6 +20,9 @@ struct Subject {
     std::string name;
     int cycles = kUnknown, tips = kUnknown;
     int components = 1;
+    // Chosen on the tuning half (false) only; the held-out half (true) tells whether a choice
+    // generalises.
+    bool heldOut = false;
     double area = 0.0;
     std::function<PointList(std::size_t n, std::uint32_t seed)> sample;
     std::function<bool(const Point&)> inside;             // empty: not known
@@ -33,12 +36,12 @@ struct Condition {
     std::function<PointList(const Subject&, std::size_t n, std::uint32_t seed)> make;
 };
 
-// The tube shapes, then the libcgal-demo models (each skipped, with a line on stdout, when
+// The tube and sheet shapes, then the libcgal-demo models (each skipped, with a line on stdout, when
 // libcgal-demo is not installed).
 std::vector<Subject> robustnessSubjects();
 
-// Clean; noise 0.5/1/2%; outliers 1/5%; half in 10%; scans from 1 and 4 views; five scans
-// misaligned by 0.5/1%.
+// Clean; noise 0.5/1/2%; outliers 1/5%; half in 10%; scans from 1 view (three directions)
+// and 4 views; five scans misaligned by 0.5/1%.
 std::vector<Condition> conditions();
 
 }  // namespace pcskeleton::bench

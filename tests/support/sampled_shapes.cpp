@@ -160,3 +160,47 @@ double meanDistanceToCylinderWall(const PointList& points, double radius, double
 }
 
 }  // namespace pcskeleton::shapes
+
+namespace pcskeleton::shapes {
+
+Triangles sheet(const std::function<Point(double u, double v)>& map, int cellsU, int cellsV,
+                const std::function<bool(double u, double v)>& keep) {
+    Triangles triangles;
+    for (int i = 0; i < cellsU; ++i) {
+        for (int j = 0; j < cellsV; ++j) {
+            const double u0 = double(i) / cellsU, u1 = double(i + 1) / cellsU;
+            const double v0 = double(j) / cellsV, v1 = double(j + 1) / cellsV;
+            if (keep && !keep(0.5 * (u0 + u1), 0.5 * (v0 + v1))) continue;
+            const Point a = map(u0, v0), b = map(u1, v0), c = map(u1, v1), d = map(u0, v1);
+            triangles.push_back({a, b, c});
+            triangles.push_back({a, c, d});
+        }
+    }
+    return triangles;
+}
+
+double area(const Triangles& triangles) {
+    double total = 0.0;
+    for (const Triangle& t : triangles) total += 0.5 * (t[1] - t[0]).cross(t[2] - t[0]).norm();
+    return total;
+}
+
+PointList sample(const Triangles& triangles, std::size_t n, std::uint32_t seed) {
+    std::vector<double> cumulative;
+    double total = 0.0;
+    for (const Triangle& t : triangles) cumulative.push_back(total += 0.5 * (t[1] - t[0]).cross(t[2] - t[0]).norm());
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    PointList points;
+    points.reserve(n);
+    for (std::size_t i = 0; i < n && !triangles.empty(); ++i) {
+        const std::size_t k =
+            std::lower_bound(cumulative.begin(), cumulative.end(), unit(rng) * total) - cumulative.begin();
+        const Triangle& t = triangles[std::min(k, triangles.size() - 1)];
+        const double a = std::sqrt(unit(rng)), b = unit(rng);
+        points.push_back((1 - a) * t[0] + a * (1 - b) * t[1] + a * b * t[2]);
+    }
+    return points;
+}
+
+}  // namespace pcskeleton::shapes

@@ -5,7 +5,9 @@
 #include "pcskeleton/contraction/point_cloud_input.h"
 #include "pcskeleton/skeleton/skeleton_graph.h"
 
+#include <array>
 #include <cstdint>
+#include <functional>
 
 namespace pcskeleton::shapes {
 
@@ -47,6 +49,21 @@ PointList withoutSector(const PointList& points, const Point& centre, double fro
 
 // Distance from p to the nearest segment.
 double distanceToCurve(const Point& p, const Polyline& curve);
+
+// Sheets: thin single-layer surfaces (a leaf, a plate) as seen by a scanner, given as
+// triangles. A sheet has no inside; its curve skeleton, where it has one, is a mid-line.
+using Triangle = std::array<Point, 3>;
+using Triangles = std::vector<Triangle>;
+
+// The image of the unit square under `map`, triangulated on a grid of cellsU x cellsV
+// cells; cells whose centre (u, v) `keep` rejects are left out (holes, outlines).
+Triangles sheet(const std::function<Point(double u, double v)>& map, int cellsU, int cellsV,
+                const std::function<bool(double u, double v)>& keep = {});
+
+double area(const Triangles& triangles);
+
+// n points uniform by area on the triangles.
+PointList sample(const Triangles& triangles, std::size_t n, std::uint32_t seed = 1);
 
 // Mean distance of the points with fromZ <= z <= toZ (a surface's vertices away from its
 // ends) to the wall of the cylinder of `radius` around the z axis; 1e9 if there are none.
