@@ -18,6 +18,7 @@ const float kNodeColour[3] = {1.0f, 0.85f, 0.0f};
 const float kSelectedColour[3] = {1.0f, 0.1f, 0.1f};
 const float kBoneColour[3] = {0.15f, 0.35f, 1.0f};
 const float kSelectedBoneColour[3] = {1.0f, 0.55f, 0.0f};  // both ends selected
+const float kInferredBoneColour[3] = {0.85f, 0.1f, 0.85f};  // dashed: a bone the data does not show
 const float kRadiusFieldColour[4] = {0.3f, 0.7f, 1.0f, 0.25f};
 
 // Draws with a GLU quadric, created once per frame.
@@ -59,13 +60,24 @@ private:
 void drawBones(const SkeletonGraph& graph, const PointList& nodes, const std::vector<bool>& selected) {
     glDisable(GL_LIGHTING);
     glLineWidth(3.0f);
-    glBegin(GL_LINES);
-    for (const Edge& e : graph.edges) {
-        glColor3fv(selected[e[0]] && selected[e[1]] ? kSelectedBoneColour : kBoneColour);
-        glVertex3dv(nodes[e[0]].data());
-        glVertex3dv(nodes[e[1]].data());
+    const std::vector<char> inferred = inferredFlags(graph);
+    for (const bool dashed : {false, true}) {
+        if (dashed) {
+            glEnable(GL_LINE_STIPPLE);
+            glLineStipple(2, 0x0F0F);
+        }
+        glBegin(GL_LINES);
+        for (std::size_t i = 0; i < graph.edges.size(); ++i) {
+            if (bool(inferred[i]) != dashed) continue;
+            const Edge& e = graph.edges[i];
+            glColor3fv(selected[e[0]] && selected[e[1]] ? kSelectedBoneColour
+                                                        : dashed ? kInferredBoneColour : kBoneColour);
+            glVertex3dv(nodes[e[0]].data());
+            glVertex3dv(nodes[e[1]].data());
+        }
+        glEnd();
     }
-    glEnd();
+    glDisable(GL_LINE_STIPPLE);
 }
 
 void drawNodes(const PointList& nodes, const std::vector<bool>& selected, double markerSize) {

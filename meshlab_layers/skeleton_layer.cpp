@@ -12,6 +12,7 @@ namespace pcskeleton::meshlab {
 
 const char* const kInputIndexAttribute = "pcs_input_index";
 const char* const kRadiusAttribute = "pcs_radius";
+const char* const kInferredAttribute = "pcs_inferred";
 const char* const kNodeAttribute = "pcs_node";
 const char* const kCorrespondenceAttribute = "pcs_correspondence";
 const char* const kSourceLayerAttribute = "pcs_source_layer";
@@ -151,6 +152,8 @@ void writeSkeletonLayer(MeshModel& layer, const SkeletonGraph& skeleton) {
     // Stale per-vertex values must not survive into the new vertices.
     auto oldRadius = Allocator::FindPerVertexAttribute<float>(out, kRadiusAttribute);
     if (Allocator::IsValidHandle(out, oldRadius)) Allocator::DeletePerVertexAttribute(out, oldRadius);
+    auto oldInferred = Allocator::FindPerEdgeAttribute<unsigned char>(out, kInferredAttribute);
+    if (Allocator::IsValidHandle(out, oldInferred)) Allocator::DeletePerEdgeAttribute(out, oldInferred);
     out.Clear();
     layer.updateDataMask(MeshModel::MM_VERTQUALITY);
     auto vertex = Allocator::AddVertices(out, skeleton.nodeCount());
@@ -160,6 +163,11 @@ void writeSkeletonLayer(MeshModel& layer, const SkeletonGraph& skeleton) {
         vertex->Q() = radius[vertex] = float(skeleton.radii[n]);
     }
     for (const Edge& e : skeleton.edges) Allocator::AddEdge(out, e[0], e[1]);
+    if (!skeleton.inferred.empty()) {
+        auto inferred = Allocator::GetPerEdgeAttribute<unsigned char>(out, kInferredAttribute);
+        const std::vector<char> flags = inferredFlags(skeleton);
+        for (std::size_t e = 0; e < flags.size(); ++e) inferred[e] = static_cast<unsigned char>(flags[e]);
+    }
     if (!skeleton.pointNode.empty()) {
         Allocator::GetPerMeshAttribute<std::vector<int>>(out, kCorrespondenceAttribute)() = skeleton.pointNode;
     }
@@ -216,12 +224,18 @@ SkeletonGraph readSkeletonLayer(const MeshModel& layer) {
         skeleton.nodes.emplace_back(v.cP()[0], v.cP()[1], v.cP()[2]);
         skeleton.radii.push_back(hasRadius ? radius[i] : v.cQ());
     }
-    for (const CEdgeO& e : m.edge) {
+    auto inferred = Allocator::FindPerEdgeAttribute<unsigned char>(m, kInferredAttribute);
+    const bool hasInferred = Allocator::IsValidHandle(m, inferred);
+    for (std::size_t i = 0; i < m.edge.size(); ++i) {
+        const CEdgeO& e = m.edge[i];
         if (e.IsD()) continue;
         const int a = node[vcg::tri::Index(m, e.cV(0))], b = node[vcg::tri::Index(m, e.cV(1))];
-        if (a >= 0 && b >= 0) skeleton.edges.push_back({a, b});
+        if (a < 0 || b < 0) continue;
+        skeleton.edges.push_back({a, b});
+        if (hasInferred && inferred[i]) skeleton.inferred.push_back({a, b});
     }
     normalizeEdges(skeleton.edges);
+    keepInferredWithinEdges(skeleton);
     auto correspondence = Allocator::FindPerMeshAttribute<std::vector<int>>(m, kCorrespondenceAttribute);
     if (Allocator::IsValidHandle(m, correspondence)) {
         // Entries are vertex slots of this layer, stale if vertices were deleted since.

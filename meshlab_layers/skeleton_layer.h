@@ -18,6 +18,7 @@ namespace pcskeleton::meshlab {
 extern const char* const kInputIndexAttribute;      // per vertex, int: source vertex of a contracted point
 extern const char* const kRadiusAttribute;          // per vertex, float: node radius
 extern const char* const kNodeAttribute;            // per vertex, int: a point's node (segments layer)
+extern const char* const kInferredAttribute;        // per edge, unsigned char: 1 for a bone the data does not show
 extern const char* const kCorrespondenceAttribute;  // per mesh, std::vector<int>
 extern const char* const kSourceLayerAttribute;     // per mesh, int: MeshModel id
 

@@ -538,6 +538,15 @@ PYBIND11_MODULE(_pcskeleton, m) {
         .def_property_readonly("nodes", [](py::object self) { return viewOf(self, &SkeletonGraph::nodes); })
         .def_property_readonly("edges", [](py::object self) { return viewOf(self, &SkeletonGraph::edges); })
         .def_property_readonly("radii", [](py::object self) { return viewOf(self, &SkeletonGraph::radii); })
+        .def_property_readonly("inferred",
+                               [](const PySkeleton& s) {
+                                   const std::vector<char> flags = inferredFlags(s.graph);
+                                   py::array_t<bool> inferred(py::ssize_t(flags.size()));
+                                   auto out = inferred.mutable_unchecked<1>();
+                                   for (std::size_t e = 0; e < flags.size(); ++e) out(py::ssize_t(e)) = flags[e] != 0;
+                                   return inferred;
+                               },
+                               "Per edge: True for a bone the data does not show (a gap in the scan bridged).")
         .def_property_readonly("correspondence",
                                [](py::object self) { return viewOf(self, &SkeletonGraph::pointNode); })
         .def_property_readonly("contracted", [](py::object self) -> py::object {

@@ -49,6 +49,22 @@ def test_y_has_three_tips_and_one_junction():
     assert (t["tips"], t["junctions"], t["cycles"], t["components"]) == (3, 1, 0, 1)
 
 
+def test_a_bridged_gap_is_an_inferred_bone():
+    # A tube with no points for a band across its middle: one skeleton, the bone across the
+    # gap marked as inferred, every other bone not.
+    rng = np.random.default_rng(5)
+    angle, z = rng.uniform(0, 2 * np.pi, 8000), rng.uniform(0, 2, 8000)
+    keep = (z < 0.9) | (z > 1.1)
+    tube = np.column_stack([0.1 * np.cos(angle), 0.1 * np.sin(angle), z])[keep]
+    s = pcskeleton.skeletonize(tube)
+    assert s.report["topology"]["components"] == 1
+    assert s.inferred.dtype == np.bool_ and s.inferred.shape == (len(s.edges),)
+    assert s.inferred.sum() == 1
+    a, b = s.nodes[s.edges[s.inferred][0]]
+    assert min(a[2], b[2]) < 0.95 and max(a[2], b[2]) > 1.05  # it spans the gap
+    assert not pcskeleton.Skeleton(s.nodes, s.edges).inferred.any()
+
+
 def test_noisy_y_keeps_three_tips():
     points = shapes.y_shape() + np.random.default_rng(3).normal(0, 0.005, (4500, 3))
     assert pcskeleton.skeletonize(points).report["topology"]["tips"] == 3

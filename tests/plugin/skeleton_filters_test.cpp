@@ -370,6 +370,13 @@ TEST_F(SkeletonFilterTest, AGapInTheDataIsBridgedUnlessTheGapLimitIsZero) {
     EXPECT_EQ(topologyOfLayer(*document.mm()).components, 1);
     const QString log = capture.text(GLLogStream::FILTER);
     EXPECT_TRUE(log.contains("Gaps in the data: 1 bridged")) << log.toStdString();
+    // The bridge is marked on the layer, for the editor to draw and the export to write.
+    CMeshO& skeleton = document.mm()->cm;
+    auto inferred = vcg::tri::Allocator<CMeshO>::FindPerEdgeAttribute<unsigned char>(skeleton, "pcs_inferred");
+    ASSERT_TRUE(vcg::tri::Allocator<CMeshO>::IsValidHandle(skeleton, inferred));
+    int marked = 0;
+    for (std::size_t e = 0; e < skeleton.edge.size(); ++e) marked += inferred[e];
+    EXPECT_EQ(marked, 1);
 
     document.setCurrentMesh(input->id());
     p.setValue("gapLimit", FloatValue(0.0f));

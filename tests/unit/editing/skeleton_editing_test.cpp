@@ -112,6 +112,37 @@ TEST(SkeletonEditing, SplitInsertsANodeOnTheBone) {
     expectValid(editor);
 }
 
+// Inferred bones (a bridged gap) stay marked through edits, follow renumbering, become two
+// when split, and are gone with their bone.
+TEST(SkeletonEditing, InferredBonesFollowTheEdits) {
+    SkeletonGraph g = tShape();
+    g.inferred = {{2, 3}, {1, 4}};
+    SkeletonEditor editor(g);
+    editor.moveNodes({3}, Point(0, 0, 1));
+    EXPECT_EQ(editor.skeleton().inferred, (std::vector<Edge>{{1, 4}, {2, 3}}));
+    editor.deleteNodes({0});  // renumbers: 1->0, 2->1, 3->2, 4->3
+    EXPECT_EQ(editor.skeleton().inferred, (std::vector<Edge>{{0, 3}, {1, 2}}));
+    const int middle = editor.splitEdge(1, 2, 0.5);
+    EXPECT_EQ(editor.skeleton().inferred, (std::vector<Edge>{{0, 3}, {1, middle}, {2, middle}}));
+    editor.deleteEdge(0, 3);
+    EXPECT_EQ(editor.skeleton().inferred, (std::vector<Edge>{{1, middle}, {2, middle}}));
+    editor.connect(0, 3);  // a bone the user draws is not a guess
+    EXPECT_EQ(editor.skeleton().inferred, (std::vector<Edge>{{1, middle}, {2, middle}}));
+    editor.mergeNodes({1, middle});  // the bone between them collapses
+    EXPECT_EQ(editor.skeleton().inferred, (std::vector<Edge>{{1, 2}}));
+    expectValid(editor);
+    editor.undo();
+    editor.undo();
+    EXPECT_EQ(editor.skeleton().inferred, (std::vector<Edge>{{1, middle}, {2, middle}}));
+}
+
+TEST(SkeletonEditing, AnInferredBoneThatIsNoBoneIsRefused) {
+    SkeletonGraph g = tShape();
+    g.inferred = {{0, 4}};
+    EXPECT_NE(invariantViolation(g).find("inferred bone 0-4 is not a bone"), std::string::npos) << invariantViolation(g);
+    EXPECT_THROW(SkeletonEditor{g}, InvalidInput);
+}
+
 TEST(SkeletonEditing, RadiusSetAndScaled) {
     SkeletonEditor editor(tShape());
     editor.setRadius({0, 4}, 0.5);

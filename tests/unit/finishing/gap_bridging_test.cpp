@@ -103,6 +103,9 @@ TEST(GapBridging, TubeWithABandOfMissingDataGivesOneSkeleton) {
     EXPECT_EQ(t.cycles, 0) << describe(t);
     ASSERT_TRUE(bridged.quality.gapBridging);
     ASSERT_EQ(bridged.quality.gapBridging->bridges.size(), 1u);
+    EXPECT_EQ(bridged.skeleton.inferred, bridged.quality.gapBridging->bridges) << "the bridge is marked as guessed";
+    const std::vector<char> flags = inferredFlags(bridged.skeleton);
+    EXPECT_EQ(std::count(flags.begin(), flags.end(), 1), 1);
     for (int end : bridged.quality.gapBridging->bridges[0]) {
         const Point& node = bridged.skeleton.nodes[std::size_t(end)];
         EXPECT_LT(std::hypot(node.x(), node.y()), 0.03) << node.transpose();  // on the axis

@@ -42,6 +42,21 @@ TEST(SkeletonFiles, PlyKeepsNodesEdgesAndRadii) {
     EXPECT_EQ(t.isolated, 1);
 }
 
+TEST(SkeletonFiles, PlyKeepsWhichBonesAreInferred) {
+    TempDir dir;
+    SkeletonGraph s = sampleSkeleton();
+    s.inferred = {{1, 4}};
+    writeSkeleton(s, dir.file("s.ply"));
+    EXPECT_EQ(readSkeleton(dir.file("s.ply")).inferred, s.inferred);
+    // A PLY without the property (MeshLab's export, other tools): no bone is inferred.
+    writeText(dir.file("plain.ply"),
+              "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty float z\n"
+              "element edge 1\nproperty int vertex1\nproperty int vertex2\nend_header\n0 0 0\n1 0 0\n0 1\n");
+    const SkeletonGraph plain = readSkeleton(dir.file("plain.ply"));
+    EXPECT_EQ(plain.edges.size(), 1u);
+    EXPECT_TRUE(plain.inferred.empty());
+}
+
 TEST(SkeletonFiles, ObjAndCgKeepTheGraph) {
     TempDir dir;
     const SkeletonGraph s = sampleSkeleton();

@@ -22,6 +22,7 @@ SkeletonEditor::SkeletonEditor(SkeletonGraph skeleton) {
     initialPointNode_ = std::move(skeleton.pointNode);
     skeleton.pointNode.clear();
     normalizeEdges(skeleton.edges);
+    keepInferredWithinEdges(skeleton);
     current_.originNode.resize(skeleton.nodeCount());
     std::iota(current_.originNode.begin(), current_.originNode.end(), 0);
     current_.graph = std::move(skeleton);
@@ -61,6 +62,7 @@ std::vector<int> SkeletonEditor::checkedNodes(std::vector<int> nodes, std::size_
 }
 
 void SkeletonEditor::commit(State next) {
+    keepInferredWithinEdges(next.graph);  // a deleted or merged bone is no longer inferred
     const std::string violation = invariantViolation(next.graph);
     if (!violation.empty()) throw InvalidInput("Cannot " + next.what + ": " + violation + ".");
     undo_.push_back(std::move(current_));
@@ -84,12 +86,16 @@ void SkeletonEditor::removeNodes(State& state, const std::vector<bool>& doomed) 
     }
     g.nodes.resize(kept);
     g.radii.resize(kept);
-    std::vector<Edge> edges;
-    for (const Edge& e : g.edges) {
-        if (newIndex[e[0]] >= 0 && newIndex[e[1]] >= 0) edges.push_back({newIndex[e[0]], newIndex[e[1]]});
-    }
-    normalizeEdges(edges);
-    g.edges = std::move(edges);
+    const auto renumbered = [&newIndex](const std::vector<Edge>& old) {
+        std::vector<Edge> edges;
+        for (const Edge& e : old) {
+            if (newIndex[e[0]] >= 0 && newIndex[e[1]] >= 0) edges.push_back({newIndex[e[0]], newIndex[e[1]]});
+        }
+        normalizeEdges(edges);
+        return edges;
+    };
+    g.edges = renumbered(g.edges);
+    g.inferred = renumbered(g.inferred);
     for (int& node : state.originNode) {
         if (node >= 0) node = newIndex[node];
     }
@@ -158,12 +164,14 @@ int SkeletonEditor::mergeNodes(const std::vector<int>& nodes) {
 
     std::vector<bool> doomed(g.nodeCount(), false);
     for (int n : merged) doomed[n] = n != kept;
-    for (Edge& e : g.edges) {
-        for (int& end : e) {
-            if (doomed[end]) end = kept;
+    for (std::vector<Edge>* edges : {&g.edges, &g.inferred}) {
+        for (Edge& e : *edges) {
+            for (int& end : e) {
+                if (doomed[end]) end = kept;
+            }
         }
+        normalizeEdges(*edges);  // drops the edges that were inside the merged set
     }
-    normalizeEdges(g.edges);  // drops the edges that were inside the merged set
     for (int& node : next.originNode) {
         if (node >= 0 && doomed[node]) node = kept;
     }
@@ -186,10 +194,15 @@ int SkeletonEditor::splitEdge(int a, int b, double at) {
     const int inserted = static_cast<int>(g.nodeCount());
     g.nodes.push_back((1.0 - at) * g.nodes[a] + at * g.nodes[b]);
     g.radii.push_back((1.0 - at) * g.radii[a] + at * g.radii[b]);
-    g.edges.erase(std::find(g.edges.begin(), g.edges.end(), Edge{std::min(a, b), std::max(a, b)}));
+    const Edge split{std::min(a, b), std::max(a, b)};
+    g.edges.erase(std::find(g.edges.begin(), g.edges.end(), split));
     g.edges.push_back({a, inserted});
     g.edges.push_back({b, inserted});
     normalizeEdges(g.edges);
+    if (std::binary_search(g.inferred.begin(), g.inferred.end(), split)) {  // both halves stay guessed
+        g.inferred.push_back({a, inserted});
+        g.inferred.push_back({b, inserted});
+    }
     commit(std::move(next));
     return inserted;
 }

@@ -76,6 +76,8 @@ GapBridgingReport bridgeGaps(SkeletonGraph& skeleton, double nodeSpacing, double
     }
     skeleton.edges.insert(skeleton.edges.end(), report.bridges.begin(), report.bridges.end());
     normalizeEdges(skeleton.edges);
+    skeleton.inferred.insert(skeleton.inferred.end(), report.bridges.begin(), report.bridges.end());
+    keepInferredWithinEdges(skeleton);
     return report;
 }
 

@@ -4,7 +4,8 @@
 // that lies close ahead of it, the two pieces are one part of the shape: a bone joins the
 // tip to the nearest node of that piece inside the limb's cone. Pieces that lie side by
 // side (two separate objects, two close parallel tubes) are not ahead of any tip and stay
-// apart. Not the paper's step; on by default (SkeletonGraphParameters::gapLimit says why).
+// apart. The bones added are marked as inferred (SkeletonGraph::inferred). Not the paper's
+// step; on by default (SkeletonGraphParameters::gapLimit says why).
 #pragma once
 
 #include "pcskeleton/skeleton/skeleton_graph.h"

@@ -3,9 +3,6 @@
 #include "pcskeleton/io/input_file.h"
 #include "pcskeleton/io/ply_reader.h"
 
-#include <vcg/complex/complex.h>
-#include <wrap/io_trimesh/export_ply.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -13,42 +10,39 @@
 #include <cstdlib>
 #include <fstream>
 #include <iomanip>
+#include <locale>
 #include <sstream>
 
 namespace pcskeleton {
 
 namespace {
 
-// A vcglib mesh just rich enough for its PLY exporter (whose files MeshLab reads back with
-// their edges).
-class IoVertex;
-class IoEdge;
-class IoFace;
-struct IoTypes : vcg::UsedTypes<vcg::Use<IoVertex>::AsVertexType, vcg::Use<IoEdge>::AsEdgeType,
-                                vcg::Use<IoFace>::AsFaceType> {};
-class IoVertex : public vcg::Vertex<IoTypes, vcg::vertex::Coord3d, vcg::vertex::Qualityd, vcg::vertex::Radiusf,
-                                    vcg::vertex::BitFlags> {};
-class IoEdge : public vcg::Edge<IoTypes, vcg::edge::VertexRef, vcg::edge::BitFlags> {};
-class IoFace : public vcg::Face<IoTypes, vcg::face::VertexRef, vcg::face::BitFlags> {};
-class IoMesh : public vcg::tri::TriMesh<std::vector<IoVertex>, std::vector<IoEdge>, std::vector<IoFace>> {};
-
-void saveWithVcg(IoMesh& mesh, const std::string& path, int mask, bool binary) {
-    if (vcg::tri::io::ExporterPLY<IoMesh>::Save(mesh, path.c_str(), mask, binary) != 0) {
-        throw InvalidInput("Cannot write '" + path + "': the file cannot be created.");
-    }
-}
-
+// ASCII PLY in the layout MeshLab reads back with its edges (the radius also in the vertex
+// quality, an empty face element), plus a per-edge `inferred` flag. Written here rather
+// than by vcglib's exporter, which has no per-edge properties.
 void writeSkeletonPly(const SkeletonGraph& skeleton, const std::string& path) {
-    IoMesh mesh;
-    auto vertex = vcg::tri::Allocator<IoMesh>::AddVertices(mesh, skeleton.nodeCount());
-    for (std::size_t n = 0; n < skeleton.nodeCount(); ++n, ++vertex) {
-        vertex->P() = vcg::Point3d(skeleton.nodes[n].x(), skeleton.nodes[n].y(), skeleton.nodes[n].z());
-        vertex->Q() = vertex->R() = float(skeleton.radii.empty() ? 0.0 : skeleton.radii[n]);
+    std::ofstream out(path);
+    if (!out) throw InvalidInput("Cannot write '" + path + "': the file cannot be created.");
+    out.imbue(std::locale::classic());
+    out << "ply\nformat ascii 1.0\ncomment pcskeleton curve skeleton; edge inferred = 1: a bone the data does not "
+           "show\nelement vertex "
+        << skeleton.nodeCount()
+        << "\nproperty double x\nproperty double y\nproperty double z\nproperty double quality\nproperty float radius\n"
+           "element face 0\nproperty list uchar int vertex_indices\nelement edge "
+        << skeleton.edgeCount() << "\nproperty int vertex1\nproperty int vertex2\nproperty uchar inferred\nend_header\n";
+    out << std::setprecision(17);
+    for (std::size_t n = 0; n < skeleton.nodeCount(); ++n) {
+        const Point& p = skeleton.nodes[n];
+        const float radius = float(skeleton.radii.empty() ? 0.0 : skeleton.radii[n]);
+        out << p.x() << ' ' << p.y() << ' ' << p.z() << ' ' << double(radius) << ' ' << std::setprecision(9) << radius
+            << std::setprecision(17) << '\n';
     }
-    for (const Edge& e : skeleton.edges) vcg::tri::Allocator<IoMesh>::AddEdge(mesh, e[0], e[1]);
-    const int mask = vcg::tri::io::Mask::IOM_VERTCOORD | vcg::tri::io::Mask::IOM_VERTQUALITY |
-                     vcg::tri::io::Mask::IOM_VERTRADIUS | vcg::tri::io::Mask::IOM_EDGEINDEX;
-    saveWithVcg(mesh, path, mask, /*binary=*/false);
+    const std::vector<char> inferred = inferredFlags(skeleton);
+    for (std::size_t e = 0; e < skeleton.edgeCount(); ++e) {
+        out << skeleton.edges[e][0] << ' ' << skeleton.edges[e][1] << ' ' << int(inferred[e]) << '\n';
+    }
+    out.close();
+    if (!out) throw InvalidInput("Cannot write '" + path + "': writing failed (disk full?).");
 }
 
 // .obj (v/l) and .cg (v/e): a header line, the nodes, then 1-based edges.
@@ -81,7 +75,7 @@ SkeletonGraph readSkeletonPly(InputFile& file) {
         skeleton.radii.push_back(std::isfinite(radius) ? radius : 0.0);
     };
     std::uint64_t edgeNumber = 0;
-    PlyElementReader edges{"edge", {"vertex1", "vertex2"}, nullptr, nullptr};
+    PlyElementReader edges{"edge", {"vertex1", "vertex2", "inferred"}, nullptr, nullptr};
     edges.begin = [&](const PlyElement& element) {
         if (!element.has("vertex1") || !element.has("vertex2")) {
             file.fail("the edge element has no vertex1 and vertex2 properties.");
@@ -97,6 +91,7 @@ SkeletonGraph readSkeletonPly(InputFile& file) {
             }
         }
         skeleton.edges.push_back({int(ends[0]), int(ends[1])});
+        if (ends[2] == 1) skeleton.inferred.push_back(skeleton.edges.back());  // NaN when the file has none
         ++edgeNumber;
     };
     readPly(file, {vertices, edges});
@@ -209,6 +204,7 @@ SkeletonGraph readSkeleton(const std::string& path) {
     const std::string ext = extensionOf(path);
     SkeletonGraph skeleton = ext == "ply" ? readSkeletonPly(file) : readSkeletonLines(file, ext == "obj" ? "l" : "e");
     normalizeEdges(skeleton.edges);
+    keepInferredWithinEdges(skeleton);
     return skeleton;
 }
 

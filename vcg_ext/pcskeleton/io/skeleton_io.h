@@ -2,8 +2,9 @@
 // input_file.h and ply_reader.h) and throw InvalidInput naming the line or byte offset;
 // writers replace a file only once the new one is complete.
 //
-// Skeletons:  .ply  vertex x y z radius quality(= radius) + element edge (vertex1 vertex2);
-//                   MeshLab reads it back with its edges, the radius in vertex quality.
+// Skeletons:  .ply  vertex x y z quality radius (quality = radius) + element edge (vertex1
+//                   vertex2 inferred, 1 for a bone the data does not show); MeshLab reads
+//                   it back with its edges, the radius in vertex quality.
 //             .obj  v x y z lines and l a b lines (1-based).
 //             .cg   the Starlab curve-skeleton format ("# D:3 NV:n NE:m", v x y z, e a b
 //                   1-based) used by skeleton benchmarks; it keeps cycles (SWC cannot)

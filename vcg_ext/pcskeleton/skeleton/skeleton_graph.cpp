@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <iterator>
 #include <sstream>
 
 namespace pcskeleton {
@@ -86,6 +87,26 @@ bool hasEdge(const std::vector<Edge>& edges, int a, int b) {
     return std::find(edges.begin(), edges.end(), wanted) != edges.end();
 }
 
+void keepInferredWithinEdges(SkeletonGraph& graph) {
+    normalizeEdges(graph.inferred);
+    std::vector<Edge> sortedEdges = graph.edges;
+    std::sort(sortedEdges.begin(), sortedEdges.end());
+    std::vector<Edge> kept;
+    std::set_intersection(graph.inferred.begin(), graph.inferred.end(), sortedEdges.begin(), sortedEdges.end(),
+                          std::back_inserter(kept));
+    graph.inferred = std::move(kept);
+}
+
+std::vector<char> inferredFlags(const SkeletonGraph& graph) {
+    std::vector<char> flags;
+    flags.reserve(graph.edges.size());
+    for (const Edge& e : graph.edges) {
+        const Edge sorted{std::min(e[0], e[1]), std::max(e[0], e[1])};
+        flags.push_back(std::binary_search(graph.inferred.begin(), graph.inferred.end(), sorted) ? 1 : 0);
+    }
+    return flags;
+}
+
 std::string invariantViolation(const SkeletonGraph& graph) {
     const int nodeCount = static_cast<int>(graph.nodeCount());
     std::ostringstream why;
@@ -121,6 +142,12 @@ std::string invariantViolation(const SkeletonGraph& graph) {
     if (twin != sorted.end()) {
         why << "nodes " << (*twin)[0] << " and " << (*twin)[1] << " are connected twice";
         return why.str();
+    }
+    for (const Edge& e : graph.inferred) {
+        if (!std::binary_search(sorted.begin(), sorted.end(), Edge{std::min(e[0], e[1]), std::max(e[0], e[1])})) {
+            why << "the inferred bone " << e[0] << "-" << e[1] << " is not a bone";
+            return why.str();
+        }
     }
     for (int node : graph.pointNode) {
         if (node < -1 || node >= nodeCount) {

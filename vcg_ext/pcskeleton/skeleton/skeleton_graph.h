@@ -18,6 +18,9 @@ struct SkeletonGraph {
     std::vector<Edge> edges;      // sorted, no duplicates, no self-loops
     std::vector<double> radii;    // per node: mean distance to its corresponding input points
     std::vector<int> pointNode;   // per input point: the node it belongs to (-1 = none)
+    // Bones the data does not show but the skeleton infers (a gap in a scan bridged): a
+    // sorted subset of `edges`, so that a user sees what was guessed.
+    std::vector<Edge> inferred;
 
     std::size_t nodeCount() const { return nodes.size(); }
     std::size_t edgeCount() const { return edges.size(); }
@@ -60,12 +63,20 @@ void normalizeEdges(std::vector<Edge>& edges);
 // Whether a and b are joined by an edge, whichever end is named first.
 bool hasEdge(const std::vector<Edge>& edges, int a, int b);
 
+// Normalises graph.inferred as the edges and keeps only the inferred bones that are still
+// edges (after an edit removed or renumbered some).
+void keepInferredWithinEdges(SkeletonGraph& graph);
+
+// Per edge, in graph.edges' order: 1 for an inferred bone, 0 for one the data shows.
+std::vector<char> inferredFlags(const SkeletonGraph& graph);
+
 // A usable radius (or radius factor): positive and finite.
 inline bool isPositiveFinite(double value) { return value > 0.0 && value < std::numeric_limits<double>::infinity(); }
 
 // Empty when the graph is valid, else the first broken rule, meant for the user: one
 // radius per node, finite positions, edges between existing nodes, no self-loop, no
-// duplicate edge, radii positive and finite, correspondence naming existing nodes or -1.
+// duplicate edge, radii positive and finite, correspondence naming existing nodes or -1,
+// inferred bones among the edges.
 std::string invariantViolation(const SkeletonGraph& graph);
 
 // Gives every node whose radius is missing (zero, negative, not finite) a usable one: the
