@@ -1,5 +1,6 @@
 // Limbs, spurs and spurious loops on hand-made graphs whose flaws are known.
 #include <pcskeleton/skeleton/skeleton_structure.h>
+#include <pcskeleton/curve_skeleton.h>
 #include "support/hand_made_graphs.h"
 #include "support/sampled_shapes.h"
 
@@ -116,4 +117,20 @@ TEST(SkeletonStructure, ALoopWithoutAHoleIsSpuriousARingIsNot) {
     ASSERT_EQ(ringCycles.size(), 1u);
     EXPECT_EQ(ringCycles[0].size(), 24u);
     EXPECT_FALSE(isSpuriousCycle(ring, ringCycles[0], kSpacing));
+}
+
+// A bracket: two plates at right angles, two bolt holes in each. Around a hole in a sheet
+// every bone lies on the surface, so the narrow-loop test for parts that touch must not take
+// the hole's loop for a contact: one loop per hole.
+TEST(SkeletonStructure, EveryBoltHoleOfABracketKeepsItsLoop) {
+    const auto holes = [](double u, double v) {
+        return std::hypot((u - 0.25) * 1.2, (v - 0.55) * 0.8) > 0.12 && std::hypot((u - 0.75) * 1.2, (v - 0.55) * 0.8) > 0.12;
+    };
+    shapes::Triangles bracket = shapes::sheet([](double u, double v) { return Point(1.2 * u, 0.8 * v, 0); }, 60, 40, holes);
+    const shapes::Triangles upright =
+        shapes::sheet([](double u, double v) { return Point(1.2 * u, 0, 0.8 * v); }, 60, 40, holes);
+    bracket.insert(bracket.end(), upright.begin(), upright.end());
+    const SkeletonResult result = computeCurveSkeleton(shapes::sample(bracket, 6000, 11));
+    EXPECT_EQ(analyseTopology(result.skeleton).cycles, 4) << describe(result.quality);
+    EXPECT_EQ(analyseTopology(result.skeleton).components, 1);
 }

@@ -1,5 +1,6 @@
 #include "pcskeleton/skeleton/skeleton_structure.h"
 
+#include "pcskeleton/internal/local_plane.h"
 #include "pcskeleton/internal/median.h"
 #include "pcskeleton/internal/spatial_index.h"
 
@@ -390,6 +391,22 @@ bool boneGrazesSurface(const SkeletonGraph& graph, const Edge& bone, const Point
     return false;
 }
 
+namespace {
+
+// A node whose points spread in a plane (thickness across it under this share of their
+// spread in it, as variances) stands on a sheet: a leaf, a plate. A tube's ring, even a
+// half ring seen from one side (0.19), is twice as thick.
+constexpr double kSheetFlatness = 0.1;
+constexpr int kSheetMinimumPoints = 8;
+
+bool isSheetNode(const PointList& points, const std::vector<int>& own) {
+    if (own.size() < std::size_t(kSheetMinimumPoints)) return false;
+    const Eigen::Vector3d spread = fitLocalPlane(points, own).variances;
+    return spread(0) < kSheetFlatness * spread(1);
+}
+
+}  // namespace
+
 std::vector<ContactLoop> contactLoops(const SkeletonGraph& graph, const PointList& points,
                                       const RefinementLimits& limits) {
     std::vector<ContactLoop> loops;
@@ -397,6 +414,11 @@ std::vector<ContactLoop> contactLoops(const SkeletonGraph& graph, const PointLis
     const std::vector<std::vector<int>> nodePoints = pointsOfNodes(graph);
     for (std::vector<int>& cycle : shortCycleBasis(graph)) {
         if (!isNarrowCycle(graph, cycle, limits.minOpening)) continue;
+        // Around a hole in a sheet every bone lies on the surface and the nodes' spread is
+        // the sheet's, not a tube's: such a loop is the hole, not a contact.
+        const auto sheetNodes = std::count_if(cycle.begin(), cycle.end(),
+                                              [&](int n) { return isSheetNode(points, nodePoints[n]); });
+        if (2 * sheetNodes > long(cycle.size())) continue;
         const Edge bone = mostStretchedBone(graph, cycle);
         if (boneGrazesSurface(graph, bone, points, nodePoints, limits.minClearance)) loops.push_back({std::move(cycle), bone});
     }
