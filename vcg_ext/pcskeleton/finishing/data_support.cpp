@@ -8,7 +8,8 @@ namespace pcskeleton {
 
 DataSupport::DataSupport(const PointList& points, double nodeSpacing)
     : points_(points), slack_(kSupportSlack * nodeSpacing), box_(boundingBox(points)),
-      index_(std::make_unique<PointIndex>(points)) {
+      // CGAL's k-d tree must not be built on no points; with none, nothing is supported.
+      index_(points.empty() ? nullptr : std::make_unique<PointIndex>(points)) {
     box_.min().array() -= slack_;
     box_.max().array() += slack_;
 }
@@ -19,7 +20,7 @@ bool DataSupport::supports(const Point& position, double radius, const std::vect
     if (!position.allFinite() || !box_.contains(position)) return false;
     double nearest = std::numeric_limits<double>::infinity();
     if (ownPoints.empty()) {
-        if (points_.empty()) return false;
+        if (!index_) return false;
         std::vector<int> found;
         index_->nearest(position, 1, found);
         if (!found.empty()) nearest = (points_[found[0]] - position).norm();
