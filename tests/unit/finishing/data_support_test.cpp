@@ -4,6 +4,7 @@
 #include <pcskeleton/finishing/data_support.h>
 #include <pcskeleton/curve_skeleton.h>
 #include <pcskeleton/io/point_cloud_io.h>
+#include "support/sampled_shapes.h"
 
 #include <gtest/gtest.h>
 
@@ -130,4 +131,28 @@ TEST(DataSupport, TheReportCountsRefusedMovesAndNamesNodesAwayFromTheirData) {
     EXPECT_EQ(warnings[0].kind, QualityWarning::Kind::NodesAwayFromData);
     EXPECT_NE(describe(warnings[0].problem).find("2 nodes lie away from their data (first: node 4)"), std::string::npos)
         << describe(warnings[0].problem);
+}
+
+TEST(DataSupport, ARibbonLeafGivesACurveAlongItsMidLine) {
+    // A leaf blade 1.6 long and 0.3 wide, tapering to both ends, arched along its length and
+    // troughed across: its skeleton is its mid-line, two tips, no loop.
+    const auto midLine = [](double u) { return Point(1.6 * u, 0, 0.35 * std::sin(M_PI * u)); };
+    const shapes::Triangles blade = shapes::sheet(
+        [&](double u, double v) {
+            const double w = (2 * v - 1) * 0.15 * std::sin(M_PI * (0.04 + 0.92 * u));
+            return Point(midLine(u) + Point(0, w, 0.15 * w * w / 0.15));
+        },
+        48, 8);
+    const PointList leaf = shapes::sample(blade, 6000, 11);
+    const SkeletonResult result = computeCurveSkeleton(leaf);
+    const SkeletonTopology t = analyseTopology(result.skeleton);
+    EXPECT_EQ(t.tips, 2) << describe(t);
+    EXPECT_EQ(t.cycles, 0) << describe(t);
+    shapes::Polyline curve;
+    for (int i = 0; i < 64; ++i) curve.push_back({midLine(i / 64.0), midLine((i + 1) / 64.0)});
+    const double diagonal = boundingBox(leaf).diagonal().norm();
+    double sum = 0;
+    for (const Point& node : result.skeleton.nodes) sum += shapes::distanceToCurve(node, curve);
+    EXPECT_LT(sum / double(result.skeleton.nodeCount()), 0.015 * diagonal) << "mean distance to the mid-line";
+    expectNodesOnTheData(result, leaf, 0.025);
 }
