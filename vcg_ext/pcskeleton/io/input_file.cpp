@@ -12,6 +12,9 @@
 #include <charconv>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
+#include <iomanip>
+#include <locale>
 #include <limits>
 
 namespace pcskeleton {
@@ -262,6 +265,16 @@ void checkWritable(const std::string& path) {
         refuse("a file cannot be created in the folder '" + folder + "' (" + std::strerror(error) + ").");
     }
     std::remove(probe.c_str());
+}
+
+void writeTextFile(const std::string& path, const std::function<void(std::ostream&)>& write) {
+    std::ofstream out(path);
+    if (!out) throw InvalidInput("Cannot write '" + path + "': the file cannot be created.");
+    out.imbue(std::locale::classic());
+    out << std::setprecision(17);
+    write(out);
+    out.close();
+    if (!out) throw InvalidInput("Cannot write '" + path + "': writing failed (disk full?).");
 }
 
 void writeFileAtomically(const std::string& path, const std::function<void(const std::string&)>& write) {

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <functional>
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -99,5 +100,10 @@ void checkWritable(const std::string& path);
 // Temporaries are "<name>.partial-<pid>-XXXXXX": those of processes that are gone (a
 // killed run) are removed by the next write to the same file.
 void writeFileAtomically(const std::string& path, const std::function<void(const std::string&)>& write);
+
+// Writes the text file `path` (typically writeFileAtomically's temporary): `write` fills a
+// stream that formats numbers in the classic locale, whatever the program's, with 17
+// significant digits. Throws InvalidInput when the file cannot be created or written.
+void writeTextFile(const std::string& path, const std::function<void(std::ostream&)>& write);
 
 }  // namespace pcskeleton

@@ -3,8 +3,7 @@
 #include "pcskeleton/io/input_file.h"
 #include "pcskeleton/io/ply_writer.h"
 
-#include <fstream>
-#include <iomanip>
+#include <ostream>
 
 namespace pcskeleton {
 
@@ -12,17 +11,14 @@ namespace {
 
 // OFF and OBJ: text, vertices then triangles (OBJ's indices are 1-based).
 void writeText(const TriangleMesh& mesh, const std::string& path, bool obj) {
-    std::ofstream out(path);
-    if (!out) throw InvalidInput("Cannot write '" + path + "': the file cannot be created.");
-    out << std::setprecision(17);
-    if (!obj) out << "OFF\n" << mesh.vertices.size() << ' ' << mesh.triangles.size() << " 0\n";
-    for (const Point& p : mesh.vertices) out << (obj ? "v " : "") << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
-    for (const auto& t : mesh.triangles) {
-        if (obj) out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
-        else out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
-    }
-    out.close();
-    if (!out) throw InvalidInput("Cannot write '" + path + "': writing failed (disk full?).");
+    writeTextFile(path, [&](std::ostream& out) {
+        if (!obj) out << "OFF\n" << mesh.vertices.size() << ' ' << mesh.triangles.size() << " 0\n";
+        for (const Point& p : mesh.vertices) out << (obj ? "v " : "") << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+        for (const auto& t : mesh.triangles) {
+            if (obj) out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+            else out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+        }
+    });
 }
 
 }  // namespace

@@ -6,8 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <iomanip>
+#include <ostream>
 
 namespace pcskeleton {
 
@@ -122,12 +121,9 @@ PointList readObjVertices(InputFile& file) {
 }
 
 void writeXyzPoints(const PointList& points, const std::string& path) {
-    std::ofstream out(path);
-    if (!out) throw InvalidInput("Cannot write '" + path + "': the file cannot be created.");
-    out << std::setprecision(17);
-    for (const Point& p : points) out << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
-    out.close();
-    if (!out) throw InvalidInput("Cannot write '" + path + "': writing failed (disk full?).");
+    writeTextFile(path, [&](std::ostream& out) {
+        for (const Point& p : points) out << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+    });
 }
 
 }  // namespace

@@ -8,9 +8,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <iomanip>
-#include <locale>
+#include <ostream>
 #include <sstream>
 
 namespace pcskeleton {
@@ -21,40 +20,35 @@ namespace {
 // quality, an empty face element), plus a per-edge `inferred` flag. Written here rather
 // than by vcglib's exporter, which has no per-edge properties.
 void writeSkeletonPly(const SkeletonGraph& skeleton, const std::string& path) {
-    std::ofstream out(path);
-    if (!out) throw InvalidInput("Cannot write '" + path + "': the file cannot be created.");
-    out.imbue(std::locale::classic());
-    out << "ply\nformat ascii 1.0\ncomment pcskeleton curve skeleton; edge inferred = 1: a bone the data does not "
-           "show\nelement vertex "
-        << skeleton.nodeCount()
-        << "\nproperty double x\nproperty double y\nproperty double z\nproperty double quality\nproperty float radius\n"
-           "element face 0\nproperty list uchar int vertex_indices\nelement edge "
-        << skeleton.edgeCount() << "\nproperty int vertex1\nproperty int vertex2\nproperty uchar inferred\nend_header\n";
-    out << std::setprecision(17);
-    for (std::size_t n = 0; n < skeleton.nodeCount(); ++n) {
-        const Point& p = skeleton.nodes[n];
-        const float radius = float(skeleton.radii.empty() ? 0.0 : skeleton.radii[n]);
-        out << p.x() << ' ' << p.y() << ' ' << p.z() << ' ' << double(radius) << ' ' << std::setprecision(9) << radius
-            << std::setprecision(17) << '\n';
-    }
-    const std::vector<char> inferred = inferredFlags(skeleton);
-    for (std::size_t e = 0; e < skeleton.edgeCount(); ++e) {
-        out << skeleton.edges[e][0] << ' ' << skeleton.edges[e][1] << ' ' << int(inferred[e]) << '\n';
-    }
-    out.close();
-    if (!out) throw InvalidInput("Cannot write '" + path + "': writing failed (disk full?).");
+    writeTextFile(path, [&](std::ostream& out) {
+        out << "ply\nformat ascii 1.0\ncomment pcskeleton curve skeleton; edge inferred = 1: a bone the data does not "
+               "show\nelement vertex "
+            << skeleton.nodeCount()
+            << "\nproperty double x\nproperty double y\nproperty double z\nproperty double quality\n"
+               "property float radius\nelement face 0\nproperty list uchar int vertex_indices\nelement edge "
+            << skeleton.edgeCount() << "\nproperty int vertex1\nproperty int vertex2\nproperty uchar inferred\n"
+               "end_header\n";
+        for (std::size_t n = 0; n < skeleton.nodeCount(); ++n) {
+            const Point& p = skeleton.nodes[n];
+            const float radius = float(skeleton.radii.empty() ? 0.0 : skeleton.radii[n]);
+            out << p.x() << ' ' << p.y() << ' ' << p.z() << ' ' << double(radius) << ' ' << std::setprecision(9)
+                << radius << std::setprecision(17) << '\n';
+        }
+        const std::vector<char> inferred = inferredFlags(skeleton);
+        for (std::size_t e = 0; e < skeleton.edgeCount(); ++e) {
+            out << skeleton.edges[e][0] << ' ' << skeleton.edges[e][1] << ' ' << int(inferred[e]) << '\n';
+        }
+    });
 }
 
 // .obj (v/l) and .cg (v/e): a header line, the nodes, then 1-based edges.
 void writeSkeletonLines(const SkeletonGraph& skeleton, const std::string& path, const std::string& header,
                         char edgeKeyword) {
-    std::ofstream out(path);
-    if (!out) throw InvalidInput("Cannot write '" + path + "': the file cannot be created.");
-    out << std::setprecision(17) << header << '\n';
-    for (const Point& p : skeleton.nodes) out << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
-    for (const Edge& e : skeleton.edges) out << edgeKeyword << ' ' << e[0] + 1 << ' ' << e[1] + 1 << '\n';
-    out.close();
-    if (!out) throw InvalidInput("Cannot write '" + path + "': writing failed (disk full?).");
+    writeTextFile(path, [&](std::ostream& out) {
+        out << header << '\n';
+        for (const Point& p : skeleton.nodes) out << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+        for (const Edge& e : skeleton.edges) out << edgeKeyword << ' ' << e[0] + 1 << ' ' << e[1] + 1 << '\n';
+    });
 }
 
 SkeletonGraph readSkeletonPly(InputFile& file) {
