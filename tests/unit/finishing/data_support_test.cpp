@@ -99,13 +99,12 @@ TEST(DataSupport, ASlightlyCurvedPlateKeepsItsNodesOnIt) {
     EXPECT_EQ(result.quality.recentering ? result.quality.recentering->recentredNodes : -1, 0);
 }
 
-TEST(DataSupport, TheCornPlantsNodesStayInsideItsCloud) {
-    // The paper's raw scan of a corn plant (Fig. 7j): thin curved leaves with boundaries,
-    // where re-centring used to put nodes up to 3.9% of the diagonal outside the cloud's box.
-    // (Within 2.5% of the diagonal of every point is issue 35's target, not reached yet.)
+TEST(DataSupport, TheCornPlantsNodesStayOnItsLeaves) {
+    // The paper's raw scan of a corn plant (Fig. 7j): thin curled leaves with boundaries,
+    // where re-centring used to put nodes beside the leaves, some outside the cloud's box.
     const PointList corn = readPointCloud(PCSKELETON_SCANS_DIR "/corn_v12108.ply");
     ASSERT_EQ(corn.size(), 12108u);
-    expectNodesOnTheData(computeCurveSkeleton(corn), corn, 0.0);
+    expectNodesOnTheData(computeCurveSkeleton(corn), corn, 0.025);
 }
 
 TEST(DataSupport, TheReportCountsRefusedMovesAndNamesNodesAwayFromTheirData) {
@@ -114,12 +113,14 @@ TEST(DataSupport, TheReportCountsRefusedMovesAndNamesNodesAwayFromTheirData) {
     q.recentering->recentredNodes = 3;
     q.recentering->meanShift = 0.5;
     q.recentering->refused = 2;
+    q.recentering->unlikeNeighbours = 4;
     q.tipExtension = TipExtensionReport{};
     q.tipExtension->extendedTips = 1;
     q.tipExtension->refused = 1;
     std::string text = describeFindings(q);
-    EXPECT_NE(text.find("Re-centring: 3 nodes of one-sided parts moved, by 0.5 on average; 2 moves refused (they "
-                        "would have taken a node away from its data)."),
+    EXPECT_NE(text.find("Re-centring: 3 nodes of one-sided parts moved, by 0.5 on average; 4 nodes left in place "
+                        "(curled like a leaf: no neighbour shows the same tube); 2 moves refused (they would have "
+                        "taken a node away from its data)."),
               std::string::npos)
         << text;
     EXPECT_NE(text.find("; 1 extension refused (it would have taken a node away from its data)."), std::string::npos)

@@ -1,5 +1,6 @@
 // Re-centring: nodes of a half tube (one view) move onto its axis; nodes whose points
-// surround them stay at their centre.
+// surround them stay at their centre; so do nodes of a curled sheet, whose curl changes
+// along it as a leaf's does.
 #include <pcskeleton/finishing/node_recentering.h>
 #include <pcskeleton/curve_skeleton.h>
 #include "support/sampled_shapes.h"
@@ -11,15 +12,15 @@
 namespace pcskeleton {
 namespace {
 
-// Three nodes along x at the centroids of the points of a tube of radius 0.2 around the x
-// axis, covering `sweep` radians of each cross-section.
-SkeletonGraph nodesOfAnArc(double sweep, PointList& points) {
+// Three nodes along x at the centroids of the points of cross-sections around the x axis,
+// covering `sweep` radians of circles of the given radii (a tube of radius 0.2 by default).
+SkeletonGraph nodesOfAnArc(double sweep, PointList& points, const std::vector<double>& radii = {0.2, 0.2, 0.2}) {
     SkeletonGraph g;
     for (int n = 0; n < 3; ++n) {
         Point centroid = Point::Zero();
         for (int k = 0; k < 40; ++k) {
             const double angle = sweep * (k + 0.5) / 40, x = n + 0.01 * (k % 5);
-            points.emplace_back(x, 0.2 * std::cos(angle), 0.2 * std::sin(angle));
+            points.emplace_back(x, radii[n] * std::cos(angle), radii[n] * std::sin(angle));
             g.pointNode.push_back(n);
             centroid += points.back();
         }
@@ -49,6 +50,32 @@ TEST(NodeRecentering, NodesSurroundedByTheirPointsStay) {
     EXPECT_EQ(recentreOneSidedNodes(g, points, DataSupport(points, 1.0)).recentredNodes, 0);
     EXPECT_EQ(g.nodes, before.nodes);
     EXPECT_EQ(g.radii, before.radii);
+}
+
+TEST(NodeRecentering, ACurledSheetWhoseCurlChangesStaysOnTheSheet) {
+    // A leaf curled across its width, a third of a circle, more tightly from node to node:
+    // each cross-section alone looks like a tube's wall, the circles of neighbours disagree.
+    PointList points;
+    SkeletonGraph g = nodesOfAnArc(2.0, points, {0.2, 0.3, 0.45});
+    const SkeletonGraph before = g;
+    const RecenteringReport report = recentreOneSidedNodes(g, points, DataSupport(points, 1.0));
+    EXPECT_EQ(report.recentredNodes, 0);
+    EXPECT_EQ(report.unlikeNeighbours, 3);
+    EXPECT_EQ(g.nodes, before.nodes);
+
+    // The same arcs with one radius are a tube seen from one side: all three move.
+    PointList tube;
+    SkeletonGraph t = nodesOfAnArc(2.0, tube, {0.3, 0.3, 0.3});
+    EXPECT_EQ(recentreOneSidedNodes(t, tube, DataSupport(tube, 1.0)).recentredNodes, 3);
+}
+
+TEST(NodeRecentering, AWallNodeNoNeighbourConfirmsStays) {
+    // One node of arc points between two ends with no points of their own: nothing around
+    // it shows a tube, so its circle's centre is a guess and it stays.
+    PointList points;
+    SkeletonGraph g = nodesOfAnArc(M_PI, points);
+    for (int& node : g.pointNode) node = node == 1 ? 1 : -1;
+    EXPECT_EQ(recentreOneSidedNodes(g, points, DataSupport(points, 1.0)).recentredNodes, 0);
 }
 
 TEST(NodeRecentering, AOneViewScanOfATubeGivesItsAxis) {

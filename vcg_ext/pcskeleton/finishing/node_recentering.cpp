@@ -2,7 +2,9 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace pcskeleton {
 
@@ -18,6 +20,11 @@ constexpr double kMaximumResidual = 0.2;  // RMS distance to the circle, share o
 // sheet (a leaf, a plate) fits a huge circle over a small arc, whose centre is far from any
 // data: above this the points are a sheet, not a part of a tube's wall.
 constexpr double kLargestArcResultant = 0.9;
+// A tube shows in its neighbours too: its radius changes slowly along the bone, so the
+// circles of neighbouring nodes agree, while the circle fitted across a curled sheet (a leaf
+// across its width) follows the curl, which changes from node to node. Two circles agree
+// when their radii are within this ratio (docs/benchmarks.md: chosen on the tuning half).
+constexpr double kLargestRadiusRatio = 1.2;
 
 struct Circle {
     Eigen::Vector2d centre;
@@ -43,44 +50,84 @@ bool fitCircle(const std::vector<Eigen::Vector2d>& q, Circle& circle) {
     return true;
 }
 
+// What a node's points across its bone look like.
+struct CrossSection {
+    enum Kind { kUnknown, kSurrounded, kWall, kSheet } kind = kUnknown;
+    double radius = 0.0;  // kWall: the circle's
+    Point centre;         // kWall: the circle's centre
+};
+
+CrossSection crossSection(int n, const SkeletonGraph& skeleton, const std::vector<int>& around,
+                          const std::vector<int>& members, const PointList& points) {
+    CrossSection section;
+    if (around.empty() || around.size() > 2 || int(members.size()) < kMinimumPoints) return section;
+    const PointList& nodes = skeleton.nodes;
+    const Point axis =
+        (around.size() == 2 ? nodes[around[1]] - nodes[around[0]] : nodes[around[0]] - nodes[n]).normalized();
+    if (!axis.allFinite()) return section;
+    const Point u = axis.unitOrthogonal(), v = axis.cross(u);
+    std::vector<Eigen::Vector2d> across;
+    for (int i : members) {
+        const Point d = points[i] - nodes[n];
+        across.emplace_back(d.dot(u), d.dot(v));
+    }
+    Circle circle;
+    if (!fitCircle(across, circle) || circle.residual > kMaximumResidual) return section;
+    Eigen::Vector2d side = Eigen::Vector2d::Zero();
+    for (const Eigen::Vector2d& q : across) {
+        if ((q - circle.centre).norm() > 0.0) side += (q - circle.centre).normalized();
+    }
+    const double arcResultant = side.norm() / double(across.size());
+    if (arcResultant < kOneSided) section.kind = CrossSection::kSurrounded;  // the centroid is right
+    else if (arcResultant > kLargestArcResultant) section.kind = CrossSection::kSheet;
+    else if (circle.centre.norm() <= circle.radius) {  // else the node would leave its tube
+        section.kind = CrossSection::kWall;
+        section.radius = circle.radius;
+        section.centre = nodes[n] + circle.centre.x() * u + circle.centre.y() * v;
+    }
+    return section;
+}
+
+bool circlesAgree(double a, double b) { return std::max(a / b, b / a) <= kLargestRadiusRatio; }
+
 }  // namespace
 
 RecenteringReport recentreOneSidedNodes(SkeletonGraph& skeleton, const PointList& points, const DataSupport& support) {
     RecenteringReport report;
-    const std::vector<std::vector<int>> adjacent = adjacencyLists(skeleton.nodeCount(), skeleton.edges);
+    const std::size_t count = skeleton.nodeCount();
+    const std::vector<std::vector<int>> adjacent = adjacencyLists(count, skeleton.edges);
     const std::vector<std::vector<int>> members = pointsOfNodes(skeleton);
-    const PointList before = skeleton.nodes;
+    std::vector<CrossSection> sections(count);
+    for (std::size_t n = 0; n < count; ++n) sections[n] = crossSection(int(n), skeleton, adjacent[n], members[n], points);
+    // A wall node is confirmed by a neighbour that is a tube too (its circle agrees, or its
+    // points surround it), and contradicted by one whose circle disagrees.
+    const auto confirmedByNeighbours = [&](std::size_t n) {
+        bool confirmed = false;
+        for (int m : adjacent[n]) {
+            const CrossSection& neighbour = sections[m];
+            if (neighbour.kind == CrossSection::kWall) {
+                if (!circlesAgree(sections[n].radius, neighbour.radius)) return false;
+                confirmed = true;
+            }
+            if (neighbour.kind == CrossSection::kSurrounded) confirmed = true;
+        }
+        return confirmed;
+    };
     double shifts = 0.0;
-    for (std::size_t n = 0; n < skeleton.nodeCount(); ++n) {
-        const std::vector<int>& around = adjacent[n];
-        if (around.empty() || around.size() > 2 || int(members[n].size()) < kMinimumPoints) continue;
-        const Point axis = (around.size() == 2 ? before[around[1]] - before[around[0]] : before[around[0]] - before[n])
-                               .normalized();
-        if (!axis.allFinite()) continue;
-        const Point u = axis.unitOrthogonal(), v = axis.cross(u);
-        std::vector<Eigen::Vector2d> across;
-        for (int i : members[n]) {
-            const Point d = points[i] - before[n];
-            across.emplace_back(d.dot(u), d.dot(v));
+    for (std::size_t n = 0; n < count; ++n) {
+        const CrossSection& section = sections[n];
+        if (section.kind != CrossSection::kWall) continue;
+        if (!confirmedByNeighbours(n)) {
+            ++report.unlikeNeighbours;
+            continue;
         }
-        Circle circle;
-        if (!fitCircle(across, circle) || circle.residual > kMaximumResidual) continue;
-        Eigen::Vector2d side = Eigen::Vector2d::Zero();
-        for (const Eigen::Vector2d& q : across) {
-            if ((q - circle.centre).norm() > 0.0) side += (q - circle.centre).normalized();
-        }
-        const double arcResultant = side.norm() / double(across.size());
-        if (arcResultant < kOneSided) continue;             // surrounded: the centroid is right
-        if (arcResultant > kLargestArcResultant) continue;  // a sheet, not a tube
-        if (circle.centre.norm() > circle.radius) continue; // the node would leave its tube
-        const Point centre = before[n] + circle.centre.x() * u + circle.centre.y() * v;
-        if (!support.supports(centre, circle.radius, members[n])) {
+        if (!support.supports(section.centre, section.radius, members[n])) {
             ++report.refused;
             continue;
         }
-        skeleton.nodes[n] = centre;
-        skeleton.radii[n] = circle.radius;
-        shifts += circle.centre.norm();
+        shifts += (section.centre - skeleton.nodes[n]).norm();
+        skeleton.nodes[n] = section.centre;
+        skeleton.radii[n] = section.radius;
         ++report.recentredNodes;
         report.nodes.push_back(int(n));
     }

@@ -3,7 +3,10 @@
 // hole), the centre of its points, where the paper's embedding puts it, lies on the
 // visible wall. Such a node moves to the centre of the circle that fits its points in the
 // plane across the bone (an algebraic least-squares fit), and takes that circle's radius;
-// when the fit is poor, or the points surround the node anyway, it stays where it is.
+// when the fit is poor, or the points surround the node anyway, it stays where it is. So does
+// a node whose neighbours do not show a tube: a tube's radius changes slowly along its bone,
+// so a neighbour's circle agrees with the node's (or the neighbour's points surround it),
+// while the circle fitted across a curled sheet (a leaf) follows the curl.
 #pragma once
 
 #include "pcskeleton/finishing/data_support.h"
@@ -18,6 +21,7 @@ struct RecenteringReport {
     std::vector<int> nodes;  // the nodes moved (numbered as in the finished skeleton)
     double meanShift = 0.0;  // input units
     int refused = 0;         // moves that would have taken a node away from its data (data_support.h)
+    int unlikeNeighbours = 0;  // nodes left in place: their neighbours do not show a tube (a curled leaf)
 };
 
 // `points` are the input points in the input's frame, `skeleton.pointNode` their nodes.

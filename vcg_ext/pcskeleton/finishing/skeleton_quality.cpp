@@ -245,6 +245,9 @@ std::string describeFindings(const SkeletonQuality& q) {
     else {
         s << counted(std::size_t(q.recentering->recentredNodes), "node", "nodes") << " of one-sided parts moved";
         if (q.recentering->recentredNodes) s << ", by " << std::setprecision(3) << q.recentering->meanShift << " on average";
+        if (q.recentering->unlikeNeighbours)
+            s << "; " << counted(std::size_t(q.recentering->unlikeNeighbours), "node", "nodes")
+              << " left in place (curled like a leaf: no neighbour shows the same tube)";
         s << refusals(q.recentering->refused, "move") << ".\n";
     }
     s << "Refinement: " << (q.refinement ? describe(*q.refinement) : std::string("off")) << ".\n";
