@@ -44,3 +44,20 @@ VIEW=90,-90 picture one-view-recentring "One-view scan: the paper's nodes hug th
   "ring" "scan 1 view" "--paper|--paper" "--no-recentre|--no-recentre" "default|"
 picture one-view-gaps "One-view scan: hidden stretches leave the skeleton in pieces; gap bridging (on by default) joins them" \
   "elephant (libcgal-demo)" "scan 1 view" "--gap-limit 0|--gap-limit 0" "default|"
+
+# The paper's corn scan (tests/data/scans), seen from the side: the skeleton stays on the
+# curled leaves. BEFORE=/path/to/an/older/pcskeleton adds that build's skeleton as a panel
+# (docs/troubleshooting/leaves.png has the one of a699d79, before the neighbour test).
+corn="$ROOT/tests/data/scans/corn_v12108.ply"
+PYTHONPATH="$ROOT/build/python" /usr/bin/python3 -c \
+  "import pcskeleton, sys; pcskeleton.write_points(pcskeleton.read_points(sys.argv[1]), 'corn.xyz')" "$corn"
+panels=("corn.xyz:input (the paper's corn scan)")
+if [ -n "${BEFORE:-}" ]; then
+  "$BEFORE" "$corn" -o corn-before.ply --quiet
+  panels+=("corn-before.ply:before")
+fi
+"$PCSKELETON" "$corn" -o corn-default.ply --quiet
+panels+=("corn-default.ply:default")
+$RENDER --view 10,0 "$PICTURES/leaves.png" \
+  "A curled leaf is not a tube: re-centring leaves the nodes on the leaves" "${panels[@]}"
+echo "wrote $PICTURES/leaves.png"
