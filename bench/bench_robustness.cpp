@@ -13,7 +13,8 @@
 // known centre curve, mean and max, in % of the diagonal; share of bone length inside the
 // shape; the tip gap (mean distance from each end of the shape to the nearest skeleton
 // tip, % of the diagonal) without and with tip extension; warnings of the quality report;
-// time of the whole pipeline.
+// time of the whole pipeline. Then the paper's plant and tree scans, which have no known
+// answer: the node invariant, and how far the worst node is from every point.
 //
 // usage: bench_robustness [POINTS]      default 6000 points per clean sample
 //        bench_robustness [POINTS] --paper
@@ -38,6 +39,12 @@
 //        bench_robustness [POINTS] --outliers [ISOLATION CLUSTER LOCAL]
 //                                       outlier detection alone: surface points flagged,
 //                                       outliers found, per condition
+//        bench_robustness [POINTS] --scans DIR
+//                                       the paper's scans (corn_v12108, tobacco_v8098, tree_small,
+//                                       as .ply or .off) from DIR instead of tests/data/scans
+//        bench_robustness [POINTS] --check-invariant
+//                                       exits with 1 if any node of any case (the suite's and the
+//                                       paper's scans) is away from its data (data_support.h)
 //        bench_robustness --write SHAPE CONDITION FILE [POINTS]
 //                                       writes one case's cloud (.xyz or .ply), e.g. for
 //                                       the pictures in docs/
@@ -47,6 +54,7 @@
 #include <pcskeleton/core/openmp_wait_policy.h>
 #include <pcskeleton/curve_skeleton.h>
 #include <pcskeleton/io/point_cloud_io.h>
+#include <pcskeleton/internal/spatial_index.h>
 #include <pcskeleton/finishing/tip_extension.h>
 #include <pcskeleton/contraction/outlier_detection.h>
 
@@ -221,11 +229,55 @@ int outlierDetection(const std::vector<Subject>& subjects, std::size_t n, const 
     return 0;
 }
 
+// The paper's scans without ground truth: each file found in `folder` as NAME.ply or NAME.off.
+// Returns the nodes away from their data, in all.
+int measurePaperScans(const std::string& folder, const SkeletonParameters& pipeline) {
+    std::printf("\nThe paper's scans (no known answer; worst: the node farthest from every point, in %% of the "
+                "diagonal)\n%-16s %7s %6s %6s %5s %8s %10s %5s %6s\n",
+                "scan", "points", "cycles", "tips", "parts", "worst", "over 2.5%", "away", "time");
+    int away = 0;
+    for (const char* name : {"corn_v12108", "tobacco_v8098", "tree_small"}) {
+        std::filesystem::path file;
+        for (const char* extension : {".ply", ".off"}) {
+            if (std::filesystem::exists(std::filesystem::path(folder) / (std::string(name) + extension))) {
+                file = std::filesystem::path(folder) / (std::string(name) + extension);
+                break;
+            }
+        }
+        if (file.empty()) {
+            std::printf("%-16s (not in %s)\n", name, folder.c_str());
+            continue;
+        }
+        const PointList cloud = readPointCloud(file.string());
+        const auto start = std::chrono::steady_clock::now();
+        const SkeletonResult result = computeCurveSkeleton(cloud, pipeline);
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const int caseAway =
+            int(DataSupport(cloud, result.quality.nodeSpacing).unsupportedNodes(result.skeleton).size());
+        const PointIndex index(cloud);
+        const double diagonal = boundingBox(cloud).diagonal().norm();
+        double worst = 0.0;
+        int over = 0;
+        for (const Point& node : result.skeleton.nodes) {
+            std::vector<int> nearest;
+            index.nearest(node, 1, nearest);
+            const double share = (cloud[nearest.at(0)] - node).norm() / diagonal;
+            worst = std::max(worst, share);
+            over += share > 0.025;
+        }
+        const SkeletonTopology t = analyseTopology(result.skeleton);
+        std::printf("%-16s %7zu %6d %6d %5d %7.2f%% %10d %5d %5.1fs\n", name, cloud.size(), t.cycles, t.tips,
+                    t.components, 100.0 * worst, over, caseAway, seconds);
+        away += caseAway;
+    }
+    return away;
+}
+
 const char* const kUsage =
     "usage: bench_robustness [POINTS] [--paper] [--no-refine] [--no-recentre] [--extend-tips] [--no-link-limit]\n"
     "                        [--gap-limit X] [--loop-opening X] [--loop-clearance F] [--full-resolution]\n"
     "                        [--gap-stretch X] [--k N] [--denoise N]\n"
-    "                        [--contracted-points N] [--shape TEXT]\n"
+    "                        [--contracted-points N] [--shape TEXT] [--scans DIR] [--check-invariant]\n"
     "       bench_robustness --outliers [POINTS [ISOLATION [CLUSTER [LOCAL]]]]\n"
     "       bench_robustness --write SHAPE CONDITION FILE [POINTS]\n"
     "The table of every shape under every scan defect (the default), the outlier detector's scores, or one\n"
@@ -239,7 +291,7 @@ int main(int argc, char** argv) {
                                       "--outliers",      "--write",             "--contracted-points",
                                       "--shape",         "--gap-limit",         "--loop-opening",
                                       "--loop-clearance", "--k",                 "--denoise",
-                                      "--gap-stretch"};
+                                      "--gap-stretch",   "--scans",             "--check-invariant"};
     for (const std::string& arg : args) {
         if (arg == "--help" || arg == "-h") {
             std::printf("%s", kUsage);
@@ -255,7 +307,7 @@ int main(int argc, char** argv) {
     const bool paper = std::find(args.begin(), args.end(), "--paper") != args.end();
     const std::set<std::string> optionsWithValue{"--contracted-points", "--shape", "--gap-limit", "--loop-opening",
                                                  "--loop-clearance", "--k",                 "--denoise",
-                                                 "--gap-stretch"};
+                                                 "--gap-stretch",      "--scans"};
     std::size_t n = 6000;
     std::vector<double> numbers;
     for (std::size_t a = write ? 4 : 0; a < args.size(); ++a) {
@@ -289,6 +341,10 @@ int main(int argc, char** argv) {
     if (contractedPoints != args.end() && contractedPoints + 1 != args.end()) {
         pipeline.resolution.maxContractedPoints = std::strtoull((contractedPoints + 1)->c_str(), nullptr, 10);
     }
+    const auto scansOption = std::find(args.begin(), args.end(), "--scans");
+    const std::string scans = scansOption != args.end() && scansOption + 1 != args.end() ? *(scansOption + 1)
+                                                                                      : PCSKELETON_SCANS_DIR;
+    const bool checkInvariant = std::find(args.begin(), args.end(), "--check-invariant") != args.end();
     const std::vector<Subject> subjects = robustnessSubjects();
 
     if (write) return writeCase(subjects, args[1], args[2], args[3], n);
@@ -306,6 +362,7 @@ int main(int argc, char** argv) {
                 "cycles", "tips", "parts", "mean d", "max d", "inside", "tip gap", "away", "warn", "time");
     // Per condition, the tuning half ([0]) and the held-out half ([1]).
     std::map<std::string, std::array<Tally, 2>> byCondition;
+    int away = 0;
     for (const Subject& subject : subjects) {
         if (subject.name.find(onlyShape) == std::string::npos) continue;
         for (const Condition& condition : conditions()) {
@@ -324,6 +381,7 @@ int main(int argc, char** argv) {
             std::fflush(stdout);
             Tally& t = byCondition[condition.name][subject.heldOut ? 1 : 0];
             t.away += row.away;
+            away += row.away;
             ++t.cases;
             const bool cyclesAndParts = row.cycles == subject.cycles && row.components == subject.components;
             t.right += cyclesAndParts && (subject.tips == kUnknown || row.tips == subject.tips);
@@ -351,6 +409,11 @@ int main(int argc, char** argv) {
                         t.gaps ? (number(t.gapBefore / t.gaps) + "->" + number(t.gapAfter / t.gaps)).c_str() : "-",
                         t.away);
         }
+    }
+    away += measurePaperScans(scans, pipeline);
+    if (checkInvariant && away > 0) {
+        std::printf("\n%d nodes away from their data: a finishing step broke the invariant.\n", away);
+        return 1;
     }
     return 0;
 }
