@@ -1,0 +1,179 @@
+// Branches and their measures on hand-made skeletons whose answers are known: a Y's lengths,
+// orders and angle, a ring, a tapered tube's volume, the points of each branch, the root
+// and the refusals.
+#include <pcskeleton/skeleton/skeleton_branches.h>
+#include <pcskeleton/core/errors.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace pcskeleton;
+
+namespace {
+
+// Adds nodes from `from` (an existing node) to `to` in `steps` equal bones; returns the last.
+int addChain(SkeletonGraph& g, int from, const Point& to, int steps, double radius = 0.1) {
+    const Point start = g.nodes[std::size_t(from)];
+    int previous = from;
+    for (int i = 1; i <= steps; ++i) {
+        g.nodes.push_back(start + (to - start) * (double(i) / steps));
+        g.radii.push_back(radius);
+        const int n = int(g.nodeCount()) - 1;
+        g.edges.push_back({previous, n});
+        previous = n;
+    }
+    normalizeEdges(g.edges);
+    return previous;
+}
+
+SkeletonGraph singleNode(const Point& p, double radius = 0.1) {
+    SkeletonGraph g;
+    g.nodes.push_back(p);
+    g.radii.push_back(radius);
+    return g;
+}
+
+// A stem from (0, 0, 0) up to a fork at (0, 0, 1), a long arm to (0.6, 0, 1.6) and a
+// short one to (-0.3, 0, 1.3): both arms leave the stem at 45 degrees.
+struct Fork {
+    SkeletonGraph graph = singleNode(Point::Zero());
+    int fork = 0, longTip = 0, shortTip = 0;
+    Fork() {
+        fork = addChain(graph, 0, Point(0, 0, 1), 10);
+        longTip = addChain(graph, fork, Point(0.6, 0, 1.6), 8);
+        shortTip = addChain(graph, fork, Point(-0.3, 0, 1.3), 4);
+    }
+};
+
+const Branch& branchEndingAt(const SkeletonBranches& b, int tip) {
+    for (const Branch& branch : b.branches) {
+        if (branch.nodes.back() == tip) return branch;
+    }
+    throw std::runtime_error("no branch ends at node " + std::to_string(tip));
+}
+
+}  // namespace
+
+TEST(SkeletonBranches, AForkGivesThreeBranchesWithTheirLengthsOrdersAndAngles) {
+    const Fork y;
+    const SkeletonBranches b = measureBranches(y.graph);
+    ASSERT_EQ(b.branches.size(), 3u);
+    const Branch& stem = b.branches[0];
+    EXPECT_EQ(stem.nodes.front(), 0) << "the lowest node is the root";
+    EXPECT_EQ(stem.nodes.back(), y.fork);
+    EXPECT_EQ(stem.parent, -1);
+    EXPECT_EQ(stem.order, 1);
+    EXPECT_NEAR(stem.length, 1.0, 1e-12);
+    EXPECT_TRUE(std::isnan(stem.angleToParent));
+
+    const Branch& longArm = branchEndingAt(b, y.longTip);
+    const Branch& shortArm = branchEndingAt(b, y.shortTip);
+    EXPECT_NEAR(longArm.length, 0.6 * std::sqrt(2.0), 1e-12);
+    EXPECT_NEAR(shortArm.length, 0.3 * std::sqrt(2.0), 1e-12);
+    EXPECT_NEAR(longArm.chord, longArm.length, 1e-12) << "a straight arm";
+    EXPECT_EQ(longArm.order, 1) << "the main axis goes on into the longer continuation";
+    EXPECT_EQ(shortArm.order, 2);
+    EXPECT_EQ(longArm.parent, 0);
+    EXPECT_NEAR(longArm.angleToParent, 45.0, 1e-9);
+    EXPECT_NEAR(shortArm.angleToParent, 45.0, 1e-9);
+    EXPECT_FALSE(longArm.closesLoop);
+}
+
+TEST(SkeletonBranches, TheRootAndTheUpAxisChooseWhereThePartGrowsFrom) {
+    const Fork y;
+    BranchOptions down;
+    down.up = Point(0, 0, -1);  // the lowest node along -z is the long arm's tip
+    const SkeletonBranches fromTip = measureBranches(y.graph, down);
+    EXPECT_EQ(fromTip.branches[0].nodes.front(), y.longTip);
+    BranchOptions atFork;
+    atFork.root = y.fork;
+    const SkeletonBranches fromFork = measureBranches(y.graph, atFork);
+    ASSERT_EQ(fromFork.branches.size(), 3u);
+    for (const Branch& branch : fromFork.branches) {
+        EXPECT_EQ(branch.nodes.front(), y.fork);
+        EXPECT_EQ(branch.parent, -1);
+        EXPECT_EQ(branch.order, 1);
+    }
+}
+
+TEST(SkeletonBranches, ARingIsOneBranchThatClosesALoop) {
+    SkeletonGraph ring;
+    for (int i = 0; i < 12; ++i) {
+        const double a = 2 * M_PI * i / 12;
+        ring.nodes.emplace_back(std::cos(a), std::sin(a), 0.1 * std::sin(a));
+        ring.radii.push_back(0.1);
+        ring.edges.push_back({i, (i + 1) % 12});
+    }
+    normalizeEdges(ring.edges);
+    const SkeletonBranches b = measureBranches(ring);
+    ASSERT_EQ(b.branches.size(), 1u);
+    EXPECT_TRUE(b.branches[0].closesLoop);
+    EXPECT_EQ(b.branches[0].nodes.front(), b.branches[0].nodes.back());
+    EXPECT_EQ(b.branches[0].nodes.size(), 13u);
+    double perimeter = 0;
+    for (const Edge& e : ring.edges) perimeter += (ring.nodes[e[0]] - ring.nodes[e[1]]).norm();
+    EXPECT_NEAR(b.branches[0].length, perimeter, 1e-12);
+}
+
+TEST(SkeletonBranches, ATaperedTubeHasTheVolumeAndRadiiOfItsCone) {
+    // Radius 0.3 at the base to 0.1 at the tip over a length of 2: a truncated cone.
+    SkeletonGraph g = singleNode(Point::Zero(), 0.3);
+    for (int i = 1; i <= 20; ++i) addChain(g, i - 1, Point(0, 0, 0.1 * i), 1, 0.3 - 0.01 * i);
+    const Branch branch = measureBranches(g).branches.at(0);
+    EXPECT_NEAR(branch.baseRadius, 0.3, 1e-12);
+    EXPECT_NEAR(branch.tipRadius, 0.1, 1e-12);
+    EXPECT_NEAR(branch.meanRadius, 0.2, 1e-12);
+    EXPECT_NEAR(branch.volume, M_PI * 2.0 / 3.0 * (0.09 + 0.03 + 0.01), 1e-12);
+}
+
+TEST(SkeletonBranches, EachPointGetsItsNodesBranchAndItsPlaceAlongIt) {
+    Fork y;
+    // One point per node; the fork's point belongs to the stem, which reaches it.
+    for (std::size_t n = 0; n < y.graph.nodeCount(); ++n) y.graph.pointNode.push_back(int(n));
+    y.graph.pointNode.push_back(-1);  // a point without a node (an outlier)
+    const SkeletonBranches b = measureBranches(y.graph);
+    EXPECT_EQ(b.pointBranch[std::size_t(y.fork)], 0);
+    EXPECT_NEAR(b.pointPosition[std::size_t(y.fork)], 1.0, 1e-12);
+    EXPECT_EQ(b.pointBranch[0], 0);
+    EXPECT_NEAR(b.pointPosition[0], 0.0, 1e-12);
+    const int longArm = b.nodeBranch[std::size_t(y.longTip)];
+    EXPECT_EQ(b.pointBranch[std::size_t(y.longTip)], longArm);
+    EXPECT_NEAR(b.pointPosition[std::size_t(y.longTip)], 1.0, 1e-12);
+    EXPECT_NEAR(b.pointPosition[std::size_t(y.longTip - 4)], 0.5, 1e-12) << "halfway along the long arm";
+    EXPECT_EQ(b.pointBranch.back(), -1);
+    EXPECT_TRUE(std::isnan(b.pointPosition.back()));
+    EXPECT_EQ(b.branches[0].points, 11);
+    EXPECT_EQ(b.branches[std::size_t(longArm)].points, 8);
+}
+
+TEST(SkeletonBranches, PartsGrowFromTheirOwnRootsAndLoneNodesHaveNoBranch) {
+    SkeletonGraph g = singleNode(Point(0, 0, 0));
+    addChain(g, 0, Point(0, 0, 1), 5);
+    g.nodes.emplace_back(5, 0, 2);  // a node on its own
+    g.radii.push_back(0.1);
+    g.nodes.emplace_back(3, 0, 1);  // a second part, built top-down
+    g.radii.push_back(0.1);
+    addChain(g, int(g.nodeCount()) - 1, Point(3, 0, -1), 4);
+    const SkeletonBranches b = measureBranches(g);
+    ASSERT_EQ(b.branches.size(), 2u);
+    EXPECT_EQ(b.branches[1].nodes.front(), int(g.nodeCount()) - 1) << "its lowest node";
+    EXPECT_EQ(b.nodeBranch[6], -1);
+}
+
+TEST(SkeletonBranches, AZeroUpAxisOrARootThatIsNoNodeIsRefused) {
+    const Fork y;
+    BranchOptions flat;
+    flat.up = Point::Zero();
+    EXPECT_THROW(measureBranches(y.graph, flat), InvalidInput);
+    for (int bad : {-2, int(y.graph.nodeCount())}) {
+        BranchOptions wrong;
+        wrong.root = bad;
+        try {
+            measureBranches(y.graph, wrong);
+            ADD_FAILURE() << "root " << bad << " accepted";
+        } catch (const InvalidInput& e) {
+            EXPECT_NE(std::string(e.what()).find("is not a node of the skeleton"), std::string::npos) << e.what();
+        }
+    }
+}

@@ -1,0 +1,54 @@
+// The skeleton as branches, and what people measure with them: a plant's stem and leaf
+// lengths, a tree's branch lengths, radii and volume, a limb's angle, which points belong
+// to which part.
+//
+// A branch is a maximal chain of bones between tips and junctions (a whole loop, when a
+// part is one). Each part of the skeleton grows from a root node, by default its lowest
+// node along an "up" axis (the base of a plant or a tree). Branches run from their base (at
+// the root, or at the junction where they leave their parent) to their tip. Orders follow
+// the botanists' and foresters' convention: 1 for the main axis from the root, 2 for what
+// grows from it, and so on; at each junction the main axis goes on into the child with the
+// longest continuation (the longest path of branches from there to a tip), the others
+// start a new order.
+#pragma once
+
+#include "pcskeleton/skeleton/skeleton_graph.h"
+
+#include <vector>
+
+namespace pcskeleton {
+
+struct Branch {
+    std::vector<int> nodes;  // from the base to the tip (the base is on the parent, or the root)
+    int parent = -1;         // the branch it grows from; -1 for a branch from its part's root
+    int order = 1;
+    bool closesLoop = false;  // it ends where the skeleton was reached already: it closes a loop
+    double length = 0.0;      // along the bones, input units
+    double chord = 0.0;       // from base to tip in a straight line
+    double baseRadius = 0.0, tipRadius = 0.0;
+    double meanRadius = 0.0;  // along its length
+    double volume = 0.0;      // the bones as truncated cones of the nodes' radii
+    // Degrees between the parent's direction where it ends and this branch's where it starts
+    // (0: straight on); NaN for a branch from the root.
+    double angleToParent = 0.0;
+    int points = 0;  // input points whose node is on the branch (its base excluded)
+};
+
+struct BranchOptions {
+    Point up = Point::UnitZ();  // the root of each part is its lowest node along `up`...
+    int root = -1;              // ...except the part of this node, which grows from it (-1: none)
+};
+
+struct SkeletonBranches {
+    std::vector<Branch> branches;  // each part's branches from its root outwards
+    // Per node: its branch (a junction belongs to the branch that reaches it, the root to its
+    // first branch); -1 for an isolated node.
+    std::vector<int> nodeBranch;
+    std::vector<int> pointBranch;       // per input point (skeleton.pointNode's), -1 for none
+    std::vector<double> pointPosition;  // per input point: 0 at its branch's base, 1 at its tip
+};
+
+// Throws InvalidInput for an `up` axis of zero length or a root that is not a node.
+SkeletonBranches measureBranches(const SkeletonGraph& skeleton, const BranchOptions& options = {});
+
+}  // namespace pcskeleton
