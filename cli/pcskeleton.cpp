@@ -4,6 +4,7 @@
 #include <pcskeleton/parameter_settings.h>
 #include <pcskeleton/core/openmp_wait_policy.h>
 #include <pcskeleton/reconstruction/skeleton_reconstruction.h>
+#include <pcskeleton/io/branch_io.h>
 #include <pcskeleton/io/input_file.h>
 #include <pcskeleton/io/mesh_io.h>
 #include <pcskeleton/io/point_cloud_io.h>
@@ -30,6 +31,7 @@ struct Options {
     std::string input, output, contracted, correspondence, report;
     std::string skeleton;  // a given (edited) skeleton to reconstruct from, instead of computing one
     std::string surface;   // where to write the reconstructed surface
+    std::string branches, pointBranches;  // the branch table; each point's branch
     bool paper = false;
     std::vector<std::pair<Parameter, double>> given;  // the parameter table's options, as given
     Settings settings;  // made from `paper` and `given` once all options are read
@@ -138,6 +140,12 @@ void printHelp() {
         "                        .ply (binary), .off or .obj\n"
         "  --skeleton FILE       reconstruct from this skeleton (.ply with radii, as -o\n"
         "                        writes it; .obj/.cg have none) instead of computing one\n"
+        "  --branches FILE       also write the branch table: per branch (a chain between\n"
+        "                        tips and junctions, grown from each part's lowest node\n"
+        "                        along z) its parent, order, length, chord, radii, volume,\n"
+        "                        angle to its parent and points; .csv or .json\n"
+        "  --point-branches FILE also write each input point's branch and place along it\n"
+        "                        (0 at the base, 1 at the tip), in the input's order; .csv\n"
         "  --report FILE         also write the quality report to FILE\n"
         "  --paper               the paper's pipeline exactly: every step it does not have\n"
         "                        is off, then every other option given applies on top,\n"
@@ -214,7 +222,9 @@ void checkOutputs(const Options& options) {
                                                                       {"--contracted", options.contracted},
                                                                       {"--correspondence", options.correspondence},
                                                                       {"--report", options.report},
-                                                                      {"--surface", options.surface}};
+                                                                      {"--surface", options.surface},
+                                                                      {"--branches", options.branches},
+                                                                      {"--point-branches", options.pointBranches}};
     for (std::size_t i = 0; i < outputs.size(); ++i) {
         const auto& [option, path] = outputs[i];
         if (path.empty()) continue;
@@ -246,7 +256,8 @@ bool parseArguments(int argc, char** argv, Options& options) {
         {"-o", &options.output},           {"--output", &options.output},
         {"--contracted", &options.contracted}, {"--correspondence", &options.correspondence},
         {"--report", &options.report},     {"--skeleton", &options.skeleton},
-        {"--surface", &options.surface}};
+        {"--surface", &options.surface},   {"--branches", &options.branches},
+        {"--point-branches", &options.pointBranches}};
     // The parameter table's options: "--name VALUE", or for a switch "--name" and "--no-name".
     std::map<std::string, std::pair<const ParameterInfo*, int>> parameters;  // value: -1 = read one
     for (const ParameterInfo& p : parameterTable()) {
@@ -293,9 +304,13 @@ bool parseArguments(int argc, char** argv, Options& options) {
     }
     if (options.input.empty()) throw UsageError("no input file");
     if (!options.skeleton.empty()) {
-        if (options.surface.empty()) throw UsageError("--skeleton is for reconstruction: add --surface FILE");
-        if (!options.output.empty() || !options.contracted.empty() || !options.correspondence.empty()) {
-            throw UsageError("with --skeleton no skeleton is computed: leave out -o, --contracted and --correspondence");
+        if (options.surface.empty() && options.branches.empty()) {
+            throw UsageError("--skeleton is for reconstruction or measuring: add --surface FILE or --branches FILE");
+        }
+        if (!options.output.empty() || !options.contracted.empty() || !options.correspondence.empty() ||
+            !options.pointBranches.empty()) {
+            throw UsageError("with --skeleton no skeleton is computed: leave out -o, --contracted, --correspondence "
+                             "and --point-branches");
         }
     } else {
         if (options.output.empty()) throw UsageError("no output file (-o FILE)");
@@ -303,6 +318,12 @@ bool parseArguments(int argc, char** argv, Options& options) {
     }
     if (!options.surface.empty() && !isMeshFileName(options.surface)) {
         throw UsageError("the surface must end in .ply, .off or .obj");
+    }
+    if (!options.branches.empty() && !isBranchTableFileName(options.branches)) {
+        throw UsageError("the branch table must end in .csv or .json");
+    }
+    if (!options.pointBranches.empty() && extensionOf(options.pointBranches) != "csv") {
+        throw UsageError("the points' branches must end in .csv");
     }
     checkOutputs(options);
     return true;
@@ -373,6 +394,17 @@ int main(int argc, char** argv) {
                              result.contraction.iterations.size(), describe(result.contraction.stopReason).c_str(),
                              s.subsampling, s.neighbourhoods, s.contraction, s.thinning, s.embedding, s.finishing, report.c_str());
             }
+        }
+        SkeletonBranches branches;
+        if (!options.branches.empty() || !options.pointBranches.empty()) {
+            branches = measureBranches(result.skeleton);
+            if (!options.branches.empty()) writes.emplace_back(options.branches, [&] { writeBranchTable(branches, options.branches); });
+            if (!options.pointBranches.empty()) {
+                writes.emplace_back(options.pointBranches, [&] { writePointBranches(branches, options.pointBranches); });
+            }
+            const std::string line = "Branches: " + describe(branches) + ".";
+            if (!options.quiet) std::fprintf(stderr, "%s\n", line.c_str());
+            report += (report.empty() ? "" : "\n") + line;
         }
         Reconstruction surface;
         if (!options.surface.empty()) {

@@ -280,7 +280,7 @@ grep -q "^result: 1 component, genus 1, closed 2-manifold" torus_level_set.log &
   || { cat torus_level_set.log; fail "--level-set still fitted the vertices to the points"; }
 "$PCSKELETON" torus.ply --skeleton ring.ply --surface torus_ring.ply --quiet
 head -c 300 torus_ring.ply | grep -q "element face" || fail "the PLY surface has no faces"
-expect_error 2 "--skeleton is for reconstruction: add --surface" torus.ply --skeleton ring.ply
+expect_error 2 "--skeleton is for reconstruction or measuring: add --surface FILE or --branches" torus.ply --skeleton ring.ply
 expect_error 2 "with --skeleton no skeleton is computed" torus.ply --skeleton ring.ply --surface s.off -o s.ply
 expect_error 2 "the surface must end in .ply, .off or .obj" torus.ply -o s.ply --surface s.xyz
 expect_error 2 "--surface 'ring.ply' is an input file" torus.ply --skeleton ring.ply --surface ring.ply --force
@@ -386,6 +386,36 @@ if [ "$SANITIZED" = 0 ]; then
   [ "$code" = 1 ] && grep -q "lower the grid resolution" left.log || { cat left.log; fail "the huge grid: exit $code"; }
   [ ! -e left.ply ] && [ ! -e left.off ] || fail "a failed run left $(ls left.* | tr '\n' ' ')"
 fi
+# The branch table and each point's branch. The knot is one loop: one branch that closes it,
+# as long as all its bones. The elephant is a tree: a branch per chain between tips and
+# junctions, and every point of the correspondence in one of them.
+"$PCSKELETON" $M/knot.off -o knot_measured.ply --branches knot_branches.json --quiet
+/usr/bin/python3 - knot_branches.json knot_measured.ply <<'PY' || fail "the knot's branch table"
+import json, sys, math
+rows = json.load(open(sys.argv[1]))
+assert len(rows) == 1 and rows[0]["closes_loop"] and rows[0]["order"] == 1, rows
+lines = open(sys.argv[2]).read().split("end_header\n")[1].split("\n")
+head = open(sys.argv[2]).read().split("end_header")[0]
+n = int(head.split("element vertex ")[1].split()[0])
+nodes = [list(map(float, l.split()[:3])) for l in lines[:n]]
+edges = [list(map(int, l.split()[:2])) for l in lines[n:] if l.strip()]
+total = sum(math.dist(nodes[a], nodes[b]) for a, b in edges)
+assert abs(rows[0]["length"] - total) < 1e-9 * total, (rows[0]["length"], total)
+PY
+"$PCSKELETON" $M/elephant.off -o elephant_measured.ply --branches elephant.csv --point-branches elephant_points.csv \
+  2>elephant_branches.log
+rows=$(($(wc -l <elephant.csv) - 1))
+grep -q "^Branches: $rows branches (order 1: " elephant_branches.log \
+  || { cat elephant_branches.log; fail "the report's branch line does not count the table's $rows rows"; }
+[ "$(head -1 elephant_points.csv)" = "branch,position" ] && [ "$(wc -l <elephant_points.csv)" = 2776 ] \
+  || fail "elephant_points.csv: not one line per point after the header"
+awk -F, -v rows="$rows" 'NR > 1 && ($1 < -1 || $1 >= rows || ($1 >= 0 && ($2 < 0 || $2 > 1))) { exit 1 }' \
+  elephant_points.csv || fail "a point's branch or place is out of range"
+expect_error 2 "the branch table must end in .csv or .json" $M/knot.off -o b.ply --branches b.txt
+expect_error 2 "the points' branches must end in .csv" $M/knot.off -o b.ply --point-branches b.json
+expect_error 2 "leave out -o, --contracted, --correspondence and --point-branches" \
+  $M/knot.off --skeleton knot.ply --branches b.csv --point-branches p.csv
+
 # The temporaries of a killed run are removed by the next write to the same file.
 sleep 0 & dead=$!; wait $dead
 echo partial > "knot.ply.partial-$dead-AbCd12"

@@ -1,0 +1,120 @@
+#include "pcskeleton/io/branch_io.h"
+
+#include "pcskeleton/core/errors.h"
+#include "pcskeleton/internal/counted.h"
+#include "pcskeleton/io/input_file.h"
+
+#include <cmath>
+#include <functional>
+#include <map>
+#include <ostream>
+#include <sstream>
+
+namespace pcskeleton {
+
+namespace {
+
+struct Column {
+    const char* name;
+    std::function<void(std::ostream&, const Branch&, std::size_t)> write;  // a NaN is written as none
+};
+
+// Writes a number, or `none` for NaN.
+void number(std::ostream& out, double value, const char* none) {
+    if (std::isnan(value)) out << none;
+    else out << value;
+}
+
+std::vector<Column> columns(const char* none) {
+    return {
+        {"branch", [](std::ostream& o, const Branch&, std::size_t i) { o << i; }},
+        {"parent", [](std::ostream& o, const Branch& b, std::size_t) { o << b.parent; }},
+        {"order", [](std::ostream& o, const Branch& b, std::size_t) { o << b.order; }},
+        {"base_node", [](std::ostream& o, const Branch& b, std::size_t) { o << b.nodes.front(); }},
+        {"tip_node", [](std::ostream& o, const Branch& b, std::size_t) { o << b.nodes.back(); }},
+        {"nodes", [](std::ostream& o, const Branch& b, std::size_t) { o << b.nodes.size(); }},
+        {"length", [](std::ostream& o, const Branch& b, std::size_t) { o << b.length; }},
+        {"chord", [](std::ostream& o, const Branch& b, std::size_t) { o << b.chord; }},
+        {"base_radius", [](std::ostream& o, const Branch& b, std::size_t) { o << b.baseRadius; }},
+        {"tip_radius", [](std::ostream& o, const Branch& b, std::size_t) { o << b.tipRadius; }},
+        {"mean_radius", [](std::ostream& o, const Branch& b, std::size_t) { o << b.meanRadius; }},
+        {"volume", [](std::ostream& o, const Branch& b, std::size_t) { o << b.volume; }},
+        {"angle_to_parent", [none](std::ostream& o, const Branch& b, std::size_t) { number(o, b.angleToParent, none); }},
+        {"points", [](std::ostream& o, const Branch& b, std::size_t) { o << b.points; }},
+        {"closes_loop", [](std::ostream& o, const Branch& b, std::size_t) { o << (b.closesLoop ? "true" : "false"); }},
+    };
+}
+
+}  // namespace
+
+bool isBranchTableFileName(const std::string& path) {
+    const std::string ext = extensionOf(path);
+    return ext == "csv" || ext == "json";
+}
+
+void writeBranchTable(const SkeletonBranches& branches, const std::string& path) {
+    if (!isBranchTableFileName(path)) {
+        throw InvalidInput("Cannot write '" + path + "': branch tables are written as .csv or .json.");
+    }
+    const bool json = extensionOf(path) == "json";
+    const std::vector<Column> table = columns(json ? "null" : "");
+    writeFileAtomically(path, [&](const std::string& temporary) {
+        writeTextFile(temporary, [&](std::ostream& out) {
+            if (!json) {
+                for (std::size_t c = 0; c < table.size(); ++c) out << (c ? "," : "") << table[c].name;
+                out << '\n';
+            } else {
+                out << "[";
+            }
+            for (std::size_t b = 0; b < branches.branches.size(); ++b) {
+                if (json) out << (b ? ",\n " : "\n ") << "{";
+                for (std::size_t c = 0; c < table.size(); ++c) {
+                    if (json) out << (c ? ", " : "") << '"' << table[c].name << "\": ";
+                    else if (c) out << ',';
+                    table[c].write(out, branches.branches[b], b);
+                }
+                out << (json ? "}" : "\n");
+            }
+            if (json) out << "\n]\n";
+        });
+    });
+}
+
+void writePointBranches(const SkeletonBranches& branches, const std::string& path) {
+    if (extensionOf(path) != "csv") {
+        throw InvalidInput("Cannot write '" + path + "': the branch of each point is written as .csv.");
+    }
+    writeFileAtomically(path, [&](const std::string& temporary) {
+        writeTextFile(temporary, [&](std::ostream& out) {
+            out << "branch,position\n";
+            for (std::size_t i = 0; i < branches.pointBranch.size(); ++i) {
+                out << branches.pointBranch[i] << ',';
+                number(out, branches.pointPosition[i], "");
+                out << '\n';
+            }
+        });
+    });
+}
+
+std::string describe(const SkeletonBranches& branches) {
+    std::map<int, std::size_t> perOrder;
+    double length = 0.0;
+    for (const Branch& b : branches.branches) {
+        ++perOrder[b.order];
+        length += b.length;
+    }
+    std::ostringstream text;
+    text << counted(branches.branches.size(), "branch", "branches");
+    if (!perOrder.empty()) {
+        text << " (";
+        for (auto it = perOrder.begin(); it != perOrder.end(); ++it) {
+            text << (it == perOrder.begin() ? "" : ", ") << "order " << it->first << ": " << it->second;
+        }
+        text << ")";
+    }
+    text.precision(6);
+    text << ", " << length << " long in all";
+    return text.str();
+}
+
+}  // namespace pcskeleton
