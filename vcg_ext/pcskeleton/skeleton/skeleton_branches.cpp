@@ -13,10 +13,6 @@ namespace pcskeleton {
 
 namespace {
 
-// Directions at a branch's ends are measured over this many bones: one bone zig-zags with
-// the nodes' placement, a whole branch may bend.
-constexpr std::size_t kDirectionBones = 3;
-
 // Each part's root: its lowest node along `up` (the lowest index among equals), or
 // `chosen` for the part holding it.
 std::vector<int> partRoots(const std::vector<std::vector<int>>& neighbours, const PointList& nodes, const Point& up,
@@ -64,14 +60,24 @@ void measureShape(const SkeletonGraph& skeleton, Branch& branch) {
     branch.meanRadius = branch.length > 0.0 ? radiusLength / branch.length : branch.baseRadius;
 }
 
-// The direction a branch leaves its base, and the one it has at its tip.
+// The node halfway along a branch (by length).
+int halfwayNode(const SkeletonGraph& skeleton, const Branch& branch) {
+    double along = 0.0;
+    for (std::size_t i = 1; i < branch.nodes.size(); ++i) {
+        along += (skeleton.nodes[branch.nodes[i]] - skeleton.nodes[branch.nodes[i - 1]]).norm();
+        if (along >= branch.length / 2.0) return branch.nodes[i];
+    }
+    return branch.nodes.back();
+}
+
+// The direction a branch leaves its base, and the one it has at its tip, each over half
+// its length: the nodes next to a junction lean towards it, so a bone or two there tells
+// little.
 Point startDirection(const SkeletonGraph& skeleton, const Branch& branch) {
-    const std::vector<int>& path = branch.nodes;
-    return skeleton.nodes[path[std::min(kDirectionBones, path.size() - 1)]] - skeleton.nodes[path.front()];
+    return skeleton.nodes[halfwayNode(skeleton, branch)] - skeleton.nodes[branch.nodes.front()];
 }
 Point endDirection(const SkeletonGraph& skeleton, const Branch& branch) {
-    const std::vector<int>& path = branch.nodes;
-    return skeleton.nodes[path.back()] - skeleton.nodes[path[path.size() - 1 - std::min(kDirectionBones, path.size() - 1)]];
+    return skeleton.nodes[branch.nodes.back()] - skeleton.nodes[halfwayNode(skeleton, branch)];
 }
 
 // At each junction the main axis goes on into the child with the longest continuation (the

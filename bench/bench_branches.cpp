@@ -1,0 +1,163 @@
+// Accuracy of the branch measures (skeleton_branches.h) on shapes whose answers are known,
+// clean and with 1% noise: limb lengths and angles of a Y and of a five-armed star, the
+// radius profile of a tapered tube, and how many of a Y's points land in the branch of the
+// limb they were sampled from.
+//
+// A limb's true length runs from its junction (or the shape's end) to the end of the shape,
+// cap included: what a ruler laid along the object measures. Each true limb is matched to
+// the branch whose tip is nearest its end.
+//
+// usage: bench_branches [POINTS]      default 6000 points per shape
+#include <pcskeleton/core/openmp_wait_policy.h>
+#include <pcskeleton/curve_skeleton.h>
+#include <pcskeleton/skeleton/skeleton_branches.h>
+#include "support/sampled_shapes.h"
+#include "support/scan_simulation.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <random>
+#include <string>
+#include <vector>
+
+using namespace pcskeleton;
+
+namespace {
+
+struct Limb {
+    Point start, end;      // the limb's centre curve, from its junction; the shape ends past `end`
+    double angleToParent;  // degrees; NaN for the limb of the root
+};
+
+struct Shape {
+    std::string name;
+    shapes::Polyline curve;
+    std::vector<Limb> limbs;
+    double radius;
+};
+
+constexpr double kRadius = 0.06;
+
+Shape yShape() {
+    const Point base(0, 0, 0), fork(0, 0, 1), left(-0.5, 0, 1.5), right(0.6, 0, 1.6);
+    return {"Y", {{base, fork}, {fork, left}, {fork, right}},
+            {{fork, base, NAN}, {fork, left, 45.0}, {fork, right, 45.0}}, kRadius};
+}
+
+Shape star() {
+    // Five arms from a centre in the x-z plane, one pointing down (the root's), the others
+    // 60, 120, 180 and 240 degrees from it.
+    const Point centre(0, 0, 0.8);
+    Shape s{"star", {}, {}, kRadius};
+    const double lengths[] = {0.8, 0.5, 0.7, 0.6, 0.4};
+    for (int arm = 0; arm < 5; ++arm) {
+        const double a = M_PI / 3.0 * arm;  // from straight down
+        const Point end = centre + lengths[arm] * Point(std::sin(a), 0, -std::cos(a));
+        s.curve.push_back({centre, end});
+        // Angles are measured from the root arm's direction where it ends (up, at the
+        // centre) to each other arm's.
+        s.limbs.push_back({centre, end, arm == 0 ? NAN : std::abs(180.0 - 60.0 * arm)});
+    }
+    return s;
+}
+
+// The tip of the branch nearest to `end`, with its branch.
+const Branch* nearestBranch(const SkeletonGraph& skeleton, const SkeletonBranches& b, const Point& end) {
+    const Branch* best = nullptr;
+    double nearest = INFINITY;
+    for (const Branch& branch : b.branches) {
+        for (int n : {branch.nodes.front(), branch.nodes.back()}) {
+            const double d = (skeleton.nodes[std::size_t(n)] - end).norm();
+            if (d < nearest) nearest = d, best = &branch;
+        }
+    }
+    return best;
+}
+
+void measureLimbs(const Shape& shape, double noise, std::size_t n) {
+    PointList points = shapes::tube(shape.curve, shape.radius, n);
+    if (noise > 0) points = shapes::withNoise(points, noise);
+    const SkeletonResult result = computeCurveSkeleton(points);
+    const SkeletonBranches b = measureBranches(result.skeleton);
+    double worstLength = 0, worstAngle = 0;
+    for (const Limb& limb : shape.limbs) {
+        // The shape ends a radius past the curve (the cap).
+        const double truth = (limb.end - limb.start).norm() + shape.radius;
+        const Branch* branch = nearestBranch(result.skeleton, b, limb.end);
+        if (!branch) continue;
+        worstLength = std::max(worstLength, std::abs(branch->length - truth) / truth);
+        if (!std::isnan(limb.angleToParent) && !std::isnan(branch->angleToParent)) {
+            worstAngle = std::max(worstAngle, std::abs(branch->angleToParent - limb.angleToParent));
+        }
+    }
+    // Segmentation: each point's true limb is the segment nearest it.
+    std::size_t right = 0, counted = 0;
+    std::vector<const Branch*> branchOfLimb;
+    for (const Limb& limb : shape.limbs) branchOfLimb.push_back(nearestBranch(result.skeleton, b, limb.end));
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        if (b.pointBranch[i] < 0) continue;
+        std::size_t limb = 0;
+        for (std::size_t l = 1; l < shape.curve.size(); ++l) {
+            if (shapes::distanceToSegment(points[i], shape.curve[l].a, shape.curve[l].b) <
+                shapes::distanceToSegment(points[i], shape.curve[limb].a, shape.curve[limb].b)) {
+                limb = l;
+            }
+        }
+        ++counted;
+        right += branchOfLimb[limb] == &b.branches[std::size_t(b.pointBranch[i])];
+    }
+    std::printf("%-6s %-6s %9zu %9zu %10.1f%% %10.1f %11.1f%%\n", shape.name.c_str(), noise > 0 ? "1%" : "clean",
+                shape.limbs.size(), b.branches.size(), 100 * worstLength, worstAngle,
+                counted ? 100.0 * right / counted : 0.0);
+}
+
+// A tube along z whose radius falls linearly from 0.15 to 0.05 over a length of 2, sampled
+// uniformly by area; the share of nodes (by bone length) whose radius is within 10% of the
+// truth at their height, away from the ends (10% of the length at each).
+void measureTaper(double noise, std::size_t n) {
+    std::mt19937 random(1);
+    std::uniform_real_distribution<double> unit(0, 1);
+    const auto radiusAt = [](double z) { return 0.15 - 0.05 * z; };
+    PointList points;
+    while (points.size() < n) {
+        const double z = 2 * unit(random), angle = 2 * M_PI * unit(random);
+        if (unit(random) * 0.15 > radiusAt(z)) continue;  // density grows with the radius
+        points.emplace_back(radiusAt(z) * std::cos(angle), radiusAt(z) * std::sin(angle), z);
+    }
+    if (noise > 0) points = shapes::withNoise(points, noise);
+    const SkeletonResult result = computeCurveSkeleton(points);
+    const SkeletonGraph& s = result.skeleton;
+    double within = 0, total = 0;
+    for (const Edge& e : s.edges) {
+        const double length = (s.nodes[e[0]] - s.nodes[e[1]]).norm();
+        for (int node : {e[0], e[1]}) {
+            const double z = s.nodes[node].z();
+            if (z < 0.2 || z > 1.8) continue;
+            total += length / 2;
+            within += std::abs(s.radii[node] - radiusAt(z)) <= 0.1 * radiusAt(z) ? length / 2 : 0.0;
+        }
+    }
+    const SkeletonBranches b = measureBranches(s);
+    const double volume = M_PI * 2.0 / 3.0 * (0.15 * 0.15 + 0.15 * 0.05 + 0.05 * 0.05);
+    double measured = 0;
+    for (const Branch& branch : b.branches) measured += branch.volume;
+    std::printf("taper  %-6s radius within 10%% along %5.1f%% of the length; volume %+.1f%% of the cone's\n",
+                noise > 0 ? "1%" : "clean", total > 0 ? 100 * within / total : 0.0, 100 * (measured - volume) / volume);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    pcskeleton::restartWithPassiveOpenMpWaits(argv);
+    const std::size_t n = argc > 1 ? std::strtoull(argv[1], nullptr, 10) : 6000;
+    std::printf("Branch measures, %zu points per shape. Lengths: worst limb's error in %% of its length;\n"
+                "angles: worst error in degrees; points: share of points in their limb's branch.\n", n);
+    std::printf("%-6s %-6s %9s %9s %11s %10s %12s\n", "shape", "noise", "limbs", "branches", "length err",
+                "angle err", "points right");
+    for (const Shape& shape : {yShape(), star()}) {
+        for (double noise : {0.0, 0.01}) measureLimbs(shape, noise, n);
+    }
+    for (double noise : {0.0, 0.01}) measureTaper(noise, n);
+    return 0;
+}
