@@ -9,6 +9,7 @@
 #include <pcskeleton/io/point_cloud_io.h>
 #include <pcskeleton/io/skeleton_io.h>
 #include <pcskeleton/reconstruction/skeleton_reconstruction.h>
+#include <pcskeleton/skeleton/skeleton_branches.h>
 
 #include <pybind11/functional.h>
 #include <pybind11/numpy.h>
@@ -333,6 +334,42 @@ py::array viewOf(const py::object& self, std::vector<T> SkeletonGraph::*member) 
     return readOnlyView(self, self.cast<const PySkeleton&>().graph.*member);
 }
 
+// A numpy array of one value per element of `items`.
+template <typename T, typename Item, typename Get>
+py::array_t<T> columnOf(const std::vector<Item>& items, Get get) {
+    py::array_t<T> column(py::ssize_t(items.size()));
+    auto out = column.template mutable_unchecked<1>();
+    for (std::size_t i = 0; i < items.size(); ++i) out(py::ssize_t(i)) = T(get(items[i]));
+    return column;
+}
+
+// The branch table as columns (numpy arrays, one value per branch) and the nodes of each
+// branch; each point's branch and place; each node's branch.
+py::dict branchesDict(const SkeletonBranches& b) {
+    const std::vector<Branch>& t = b.branches;
+    py::dict d;
+    d["parent"] = columnOf<int>(t, [](const Branch& x) { return x.parent; });
+    d["order"] = columnOf<int>(t, [](const Branch& x) { return x.order; });
+    d["base_node"] = columnOf<int>(t, [](const Branch& x) { return x.nodes.front(); });
+    d["tip_node"] = columnOf<int>(t, [](const Branch& x) { return x.nodes.back(); });
+    d["length"] = columnOf<double>(t, [](const Branch& x) { return x.length; });
+    d["chord"] = columnOf<double>(t, [](const Branch& x) { return x.chord; });
+    d["base_radius"] = columnOf<double>(t, [](const Branch& x) { return x.baseRadius; });
+    d["tip_radius"] = columnOf<double>(t, [](const Branch& x) { return x.tipRadius; });
+    d["mean_radius"] = columnOf<double>(t, [](const Branch& x) { return x.meanRadius; });
+    d["volume"] = columnOf<double>(t, [](const Branch& x) { return x.volume; });
+    d["angle_to_parent"] = columnOf<double>(t, [](const Branch& x) { return x.angleToParent; });
+    d["points"] = columnOf<int>(t, [](const Branch& x) { return x.points; });
+    d["closes_loop"] = columnOf<bool>(t, [](const Branch& x) { return x.closesLoop; });
+    py::list nodes;
+    for (const Branch& x : t) nodes.append(columnOf<int>(x.nodes, [](int n) { return n; }));
+    d["nodes"] = nodes;
+    d["node_branch"] = columnOf<int>(b.nodeBranch, [](int n) { return n; });
+    d["point_branch"] = columnOf<int>(b.pointBranch, [](int n) { return n; });
+    d["point_position"] = columnOf<double>(b.pointPosition, [](double x) { return x; });
+    return d;
+}
+
 py::dict topologyDict(const SkeletonTopology& t) {
     py::dict d;
     d["nodes"] = t.nodes;
@@ -557,6 +594,16 @@ PYBIND11_MODULE(_pcskeleton, m) {
         .def_readonly("report", &PySkeleton::report)
         .def_property_readonly("topology", [](const PySkeleton& s) { return topologyDict(analyseTopology(s.graph)); })
         .def("write", [](const PySkeleton& s, const std::string& path) { writeSkeleton(s.graph, path); }, py::arg("path"))
+        .def("_measure_branches",
+             [](const PySkeleton& s, const DoubleArray& up, int root) {
+                 const PointList axis = pointsFrom(up, "up");
+                 if (axis.size() != 1) throw InvalidInput("up must be one direction of three numbers, e.g. (0, 0, 1).");
+                 BranchOptions options;
+                 options.up = axis[0];
+                 options.root = root;
+                 return branchesDict(measureBranches(s.graph, options));
+             },
+             py::arg("up"), py::arg("root"))
         .def("__len__", [](const PySkeleton& s) { return s.graph.nodeCount(); });
 
     m.def("_skeletonize", [](const DoubleArray& points, const py::dict& kwargs, const py::object& progress) {

@@ -30,7 +30,7 @@ from ._pcskeleton import Skeleton, SkeletonEditor, read_points, read_skeleton, w
 __all__ = [
     "skeletonize", "Contraction", "skeleton_from_contraction", "reconstruct",
     "Skeleton", "SkeletonEditor", "read_points", "read_skeleton", "write_points", "write_mesh",
-    "SKELETON_PARAMETERS", "RECONSTRUCTION_PARAMETERS",
+    "SKELETON_PARAMETERS", "RECONSTRUCTION_PARAMETERS", "Branches",
 ]
 
 # The defaults, read from the library itself (the CLI's and the MeshLab dialog's too).
@@ -168,6 +168,77 @@ def _repr(self):
             f"component(s), {t['cycles']} cycle(s), {t['tips']} tip(s)>")
 
 
+class Branches:
+    """The skeleton as branches: chains of bones between tips and junctions (or whole
+    loops), grown from each part's root, by default its lowest node along ``up``.
+
+    Orders follow the botanists' convention: 1 for the main axis from the root, 2 for what
+    grows from it, ...; at each junction the main axis goes on into the child with the
+    longest continuation. One value per branch in each column (numpy arrays): ``parent``
+    (-1 from the root), ``order``, ``base_node``, ``tip_node``, ``length`` (along the
+    bones), ``chord``, ``base_radius``, ``tip_radius``, ``mean_radius``, ``volume`` (the
+    bones as truncated cones), ``angle_to_parent`` (degrees, 0 straight on; NaN from the
+    root), ``points``, ``closes_loop``; ``nodes``, a list of each branch's nodes from base
+    to tip. Per input point, ``point_branch`` (-1 for none) and ``point_position`` (0 at
+    the branch's base, 1 at its tip); per skeleton node, ``node_branch``.
+    """
+
+    COLUMNS = ("parent", "order", "base_node", "tip_node", "length", "chord", "base_radius", "tip_radius",
+               "mean_radius", "volume", "angle_to_parent", "points", "closes_loop")
+
+    def __init__(self, table):
+        for name, value in table.items():
+            setattr(self, name, value)
+
+    def __len__(self):
+        return len(self.parent)
+
+    def __repr__(self):
+        orders = {}
+        for order in self.order:
+            orders[int(order)] = orders.get(int(order), 0) + 1
+        by_order = ", ".join(f"order {o}: {n}" for o, n in sorted(orders.items()))
+        return f"<pcskeleton.Branches: {len(self)} ({by_order}), {float(sum(self.length)):.6g} long in all>"
+
+    def to_pandas(self):
+        """A pandas.DataFrame, one row per branch (index: the branch number)."""
+        import pandas
+        return pandas.DataFrame({name: getattr(self, name) for name in self.COLUMNS})
+
+
+def _measure_branches(self, up=(0.0, 0.0, 1.0), root=None):
+    """The skeleton's branches (see Branches): each part grows from its lowest node along
+    ``up``, except the part holding node ``root``, which grows from it. A zero ``up`` or a
+    root that is not a node raises ValueError."""
+    import numpy
+    axis = numpy.asarray(up, dtype=numpy.float64).reshape(-1, 3)
+    return Branches(self._measure_branches(axis, -1 if root is None else int(root)))
+
+
+def _branches(self):
+    """The branches with the default root (each part's lowest node along z); see
+    measure_branches to choose another."""
+    return self.measure_branches()
+
+
+def _point_branches(self):
+    """(branch, position) per input point: its branch (-1 for none) and its place along it,
+    0 at the base and 1 at the tip."""
+    branches = self.measure_branches()
+    return branches.point_branch, branches.point_position
+
+
+def _branch_of(self, node):
+    """The branch a node belongs to (a junction to the branch that reaches it)."""
+    if not 0 <= int(node) < len(self):
+        raise ValueError(f"node {node} is not a node of the skeleton (it has {len(self)} nodes, numbered from 0).")
+    return int(self.measure_branches().node_branch[int(node)])
+
+
+Skeleton.measure_branches = _measure_branches
+Skeleton.branches = property(_branches)
+Skeleton.point_branches = property(_point_branches)
+Skeleton.branch_of = _branch_of
 Skeleton.to_networkx = _to_networkx
 Skeleton.to_open3d = _to_open3d
 Skeleton.__repr__ = _repr

@@ -314,6 +314,71 @@ def test_reconstruction_refuses_bad_parameters(torus_points, torus_skeleton):
 
 # ---- Interop -----------------------------------------------------------------------------------
 
+def _fork():
+    """A stem from (0, 0, 0) to a fork at (0, 0, 1), a long arm to (0.6, 0, 1.6), a short
+    one to (-0.3, 0, 1.3): nodes 0.1 apart along each."""
+    nodes, edges = [(0.0, 0.0, 0.0)], []
+    def chain(start, end, steps):
+        first = len(nodes) - 1 if start is None else start
+        previous = first
+        a, b = np.array(nodes[first]), np.array(end)
+        for i in range(1, steps + 1):
+            nodes.append(tuple(a + (b - a) * i / steps))
+            edges.append((previous, len(nodes) - 1))
+            previous = len(nodes) - 1
+        return previous
+    fork = chain(0, (0, 0, 1), 10)
+    long_tip = chain(fork, (0.6, 0, 1.6), 6)
+    short_tip = chain(fork, (-0.3, 0, 1.3), 3)
+    return pcskeleton.Skeleton(np.array(nodes), np.array(edges), np.full(len(nodes), 0.05)), fork, long_tip, short_tip
+
+
+def test_branches_of_a_fork_have_their_lengths_orders_and_angles():
+    skeleton, fork, long_tip, short_tip = _fork()
+    branches = skeleton.branches
+    assert len(branches) == 3
+    assert list(branches.parent) == [-1, 0, 0]
+    assert branches.base_node[0] == 0 and branches.tip_node[0] == fork
+    by_tip = {int(t): i for i, t in enumerate(branches.tip_node)}
+    long_arm, short_arm = by_tip[long_tip], by_tip[short_tip]
+    assert branches.length[0] == pytest.approx(1.0)
+    assert branches.length[long_arm] == pytest.approx(0.6 * 2 ** 0.5)
+    assert branches.length[short_arm] == pytest.approx(0.3 * 2 ** 0.5)
+    assert branches.order[long_arm] == 1 and branches.order[short_arm] == 2
+    assert branches.angle_to_parent[long_arm] == pytest.approx(45.0)
+    assert np.isnan(branches.angle_to_parent[0])
+    assert list(branches.nodes[long_arm]) == [fork] + list(range(fork + 1, long_tip + 1))
+    assert skeleton.branch_of(long_tip) == long_arm and skeleton.branch_of(fork) == 0
+    from_tip = skeleton.measure_branches(up=(0, 0, -1))
+    assert from_tip.base_node[0] == long_tip
+    assert skeleton.measure_branches(root=fork).parent.tolist() == [-1, -1, -1]
+
+
+def test_every_point_with_a_node_gets_a_branch_and_a_place(torus_points, torus_skeleton):
+    branch, position = torus_skeleton.point_branches
+    assert len(branch) == len(torus_points)
+    with_node = torus_skeleton.correspondence >= 0
+    assert (branch[with_node] >= 0).all() and (branch[~with_node] == -1).all()
+    assert ((position[with_node] >= 0) & (position[with_node] <= 1)).all()
+    assert torus_skeleton.branches.closes_loop.any(), "the torus's loop is closed by a branch"
+
+
+def test_branches_refuse_a_zero_up_axis_or_a_root_that_is_no_node():
+    skeleton = _fork()[0]
+    with pytest.raises(ValueError, match="The up axis has no length"):
+        skeleton.measure_branches(up=(0, 0, 0))
+    with pytest.raises(ValueError, match="is not a node of the skeleton"):
+        skeleton.measure_branches(root=len(skeleton))
+    with pytest.raises(ValueError, match="is not a node of the skeleton"):
+        skeleton.branch_of(-1)
+
+
+def test_branches_as_a_data_frame():
+    pytest.importorskip("pandas")
+    frame = _fork()[0].branches.to_pandas()
+    assert list(frame.columns) == list(pcskeleton.Branches.COLUMNS) and len(frame) == 3
+
+
 def test_networkx_graph(torus_skeleton):
     networkx = pytest.importorskip("networkx")
     graph = torus_skeleton.to_networkx()
