@@ -8,6 +8,7 @@
 #include <pcskeleton/parameter_settings.h>
 #include <pcskeleton/editing/skeleton_editing.h>
 #include <pcskeleton/io/input_file.h>
+#include <pcskeleton/io/branch_io.h>
 #include <pcskeleton/io/skeleton_io.h>
 
 #include <vcg/complex/allocate.h>
@@ -162,12 +163,35 @@ QString defaultSkeletonFileName(MeshDocument& md, const QString& extension = "pl
     return fileName;
 }
 
+// Why `fileName` must not be written, or empty: the file of an open layer never is, an
+// existing file only with `overwrite` (the "Replace an existing file" box).
+QString refusalToWrite(MeshDocument& md, const QString& fileName, bool overwrite) {
+    for (const MeshModel* m : layersOf(md)) {
+        if (!m->fullName().isEmpty() && pcskeleton::sameFile(m->fullName().toStdString(), fileName.toStdString())) {
+            return QString("Cannot write '%1': it is the file of the open layer '%2', which is never "
+                           "overwritten. Choose another name.").arg(fileName, m->label());
+        }
+    }
+    if (QFileInfo::exists(fileName) && !overwrite) {
+        return QString("Cannot write '%1': the file exists already. Choose another name, or tick "
+                       "'Replace an existing file'.").arg(fileName);
+    }
+    return {};
+}
+
+// The "up" axes of Measure Skeleton Branches, in the order of its list.
+const QStringList kUpAxisNames = {"+Z", "+Y", "+X", "-Z", "-Y", "-X"};
+const pcskeleton::Point kUpAxes[] = {pcskeleton::Point::UnitZ(),  pcskeleton::Point::UnitY(),
+                                     pcskeleton::Point::UnitX(),  -pcskeleton::Point::UnitZ(),
+                                     -pcskeleton::Point::UnitY(), -pcskeleton::Point::UnitX()};
+
 }  // namespace
 
 FilterPCSkeletonPlugin::FilterPCSkeletonPlugin() {
     typeList = {FP_CONTRACT_POINT_CLOUD,          FP_COMPUTE_SKELETON,       FP_SKELETON_FROM_CONTRACTED,
                 FP_EXPORT_SKELETON,               FP_DELETE_SELECTED_NODES,  FP_CONNECT_SELECTED_NODES,
-                FP_MERGE_SELECTED_NODES,          FP_SET_RADIUS_OF_SELECTED_NODES, FP_RECONSTRUCT_FROM_SKELETON};
+                FP_MERGE_SELECTED_NODES,          FP_SET_RADIUS_OF_SELECTED_NODES, FP_RECONSTRUCT_FROM_SKELETON,
+                FP_MEASURE_BRANCHES};
     for (int type : typeList) actionList.push_back(new QAction(filterName(type), this));
 }
 
@@ -184,6 +208,7 @@ QString FilterPCSkeletonPlugin::filterName(int filter) const {
         case FP_MERGE_SELECTED_NODES: return "Skeleton: Merge Selected Nodes";
         case FP_SET_RADIUS_OF_SELECTED_NODES: return "Skeleton: Set Radius of Selected Nodes";
         case FP_RECONSTRUCT_FROM_SKELETON: return "Reconstruct Surface from Skeleton";
+        case FP_MEASURE_BRANCHES: return "Measure Skeleton Branches";
     }
     return {};
 }
@@ -246,6 +271,15 @@ QString FilterPCSkeletonPlugin::filterInfo(int filter) const {
                 "level set (marching cubes). Adds a mesh layer; the log gives the grid, the solver's effort and "
                 "the genus of the result. Neither input layer is changed.") +
                 kPaperReference;
+        case FP_MEASURE_BRANCHES:
+            return QString(
+                "Splits the current skeleton layer into branches (chains of bones between tips and junctions, or "
+                "whole loops) grown from each part's root, its lowest node along the up axis, and logs for each its "
+                "order (1 for the main axis from the root, 2 for what grows from it, ...; the main axis goes on "
+                "into the longest continuation), length, radii, volume, angle to its parent and number of points. "
+                "Adds a copy of the skeleton's points coloured by branch, with the branch in the per-vertex "
+                "attribute pcs_branch, and writes the table as CSV or JSON if a file is given. Neither layer is "
+                "changed.");
     }
     return {};
 }
@@ -354,6 +388,19 @@ void FilterPCSkeletonPlugin::addParameters(int filter, MeshDocument& md, RichPar
             addParameterFields(parameters, kReconstructionStages, true);
             break;
         }
+        case FP_MEASURE_BRANCHES:
+            parameters.addParam(RichEnum("upAxis", 0, kUpAxisNames, "Up axis",
+                "Each part of the skeleton grows from its lowest node along this axis (the base of a plant or a "
+                "tree), unless a root node is given."));
+            parameters.addParam(RichInt("rootNode", -1, "Root node",
+                "The node its part grows from, numbered as the skeleton layer's vertices (-1: the lowest node "
+                "along the up axis)."));
+            parameters.addParam(FileSaveParameter("tableFile", "", "Branch table (*.csv *.json)", "Table file",
+                "Also write the table to this file, .csv or .json (empty: only the log). The file of an open "
+                "layer is never written."));
+            parameters.addParam(RichBool("overwrite", false, "Replace an existing file",
+                "Write over a table file that exists already. Off: an existing file is refused and left as it is."));
+            break;
     }
 }
 
@@ -392,6 +439,7 @@ bool FilterPCSkeletonPlugin::runFilter(int filter, MeshDocument& md, const RichP
         case FP_MERGE_SELECTED_NODES:
         case FP_SET_RADIUS_OF_SELECTED_NODES: return editSelectedNodes(filter, md, parameters);
         case FP_RECONSTRUCT_FROM_SKELETON: return reconstructFromSkeleton(md, parameters, cb);
+        case FP_MEASURE_BRANCHES: return measureBranches(md, parameters);
     }
     failure_ = "Unknown filter.";
     return false;
@@ -530,23 +578,68 @@ bool FilterPCSkeletonPlugin::exportSkeleton(MeshDocument& md, const RichParamete
         failure_ = QString("Cannot write '%1': the file name must end in .ply, .obj or .cg.").arg(fileName);
         return false;
     }
-    for (const MeshModel* m : layersOf(md)) {
-        if (!m->fullName().isEmpty() && pcskeleton::sameFile(m->fullName().toStdString(), fileName.toStdString())) {
-            failure_ = QString("Cannot write '%1': it is the file of the open layer '%2', which is never "
-                                   "overwritten. Choose another name.").arg(fileName, m->label());
-            return false;
-        }
-    }
-    if (QFileInfo::exists(fileName) && !parameters.getBool("overwrite")) {
-        failure_ = QString("Cannot write '%1': the file exists already. Choose another name, or tick "
-                               "'Replace an existing file'.").arg(fileName);
-        return false;
-    }
+    failure_ = refusalToWrite(md, fileName, parameters.getBool("overwrite"));
+    if (!failure_.isEmpty()) return false;
     const pcskeleton::SkeletonGraph skeleton = readSkeletonLayer(layer);
     pcskeleton::writeSkeleton(skeleton, fileName.toStdString());
     writeLog(*this, "Skeleton '%s' written to '%s': %s.", qUtf8Printable(layer.label()),
         qUtf8Printable(QFileInfo(fileName).absoluteFilePath()),
         pcskeleton::describe(pcskeleton::analyseTopology(skeleton)).c_str());
+    return true;
+}
+
+bool FilterPCSkeletonPlugin::measureBranches(MeshDocument& md, const RichParameterList& parameters) {
+    const MeshModel& layer = *md.mm();
+    failure_ = notASkeletonReason(layer);
+    if (!failure_.isEmpty()) return false;
+    const pcskeleton::SkeletonGraph skeleton = readSkeletonLayer(layer);
+    pcskeleton::BranchOptions options;
+    const int axis = parameters.getEnum("upAxis");
+    if (axis < 0 || axis >= kUpAxisNames.size()) {
+        failure_ = "Unknown up axis.";
+        return false;
+    }
+    options.up = kUpAxes[axis];
+    options.root = parameters.getInt("rootNode");
+    const pcskeleton::SkeletonBranches branches = pcskeleton::measureBranches(skeleton, options);
+    const QString fileName = parameters.getSaveFileName("tableFile");
+    if (!fileName.isEmpty()) {
+        if (!pcskeleton::isBranchTableFileName(fileName.toStdString())) {
+            failure_ = QString("Cannot write '%1': the table file's name must end in .csv or .json.").arg(fileName);
+            return false;
+        }
+        failure_ = refusalToWrite(md, fileName, parameters.getBool("overwrite"));
+        if (!failure_.isEmpty()) return false;
+        pcskeleton::writeBranchTable(branches, fileName.toStdString());
+    }
+    writeLog(*this, "Branches of '%s' (up axis %s): %s.", qUtf8Printable(layer.label()),
+             qUtf8Printable(kUpAxisNames[axis]), pcskeleton::describe(branches).c_str());
+    for (std::size_t b = 0; b < branches.branches.size(); ++b) {
+        const pcskeleton::Branch& branch = branches.branches[b];
+        const QString angle = branch.parent < 0 ? QString("from the root")
+                                                : QString("%1 degrees from branch %2")
+                                                      .arg(branch.angleToParent, 0, 'f', 1)
+                                                      .arg(branch.parent);
+        writeLog(*this, "  branch %zu: order %d, %s, length %g, radius %g at the base and %g at the tip, volume %g, "
+                 "%d points%s", b, branch.order, qUtf8Printable(angle), branch.length, branch.baseRadius,
+                 branch.tipRadius, branch.volume, branch.points, branch.closesLoop ? ", closes a loop" : "");
+    }
+    if (!fileName.isEmpty()) {
+        writeLog(*this, "Branch table written to '%s'.", qUtf8Printable(QFileInfo(fileName).absoluteFilePath()));
+    }
+    MeshModel* source = sourceLayerOf(md, layer);
+    if (source == nullptr || skeleton.pointNode.empty()) {
+        writeLog(*this, "No points coloured by branch: the layer the skeleton was computed from is not open.");
+        return true;
+    }
+    const LayerPoints input = collectPoints(*source);
+    std::vector<int> labels(input.points.size(), -1);
+    for (std::size_t i = 0; i < input.points.size(); ++i) {
+        const std::size_t slot = std::size_t(input.vertexIndex[i]);
+        if (slot < branches.pointBranch.size()) labels[i] = branches.pointBranch[slot];
+    }
+    addLabelledPointLayer(md, input, labels, int(branches.branches.size()), kBranchAttribute,
+                          derivedLabel(*source, "branches"));
     return true;
 }
 

@@ -34,6 +34,7 @@ public:
         FP_MERGE_SELECTED_NODES,
         FP_SET_RADIUS_OF_SELECTED_NODES,
         FP_RECONSTRUCT_FROM_SKELETON,
+        FP_MEASURE_BRANCHES,
     };
 
     FilterPCSkeletonPlugin();
@@ -90,6 +91,7 @@ private:
     bool exportSkeleton(MeshDocument& md, const RichParameterList& parameters);
     bool editSelectedNodes(int filter, MeshDocument& md, const RichParameterList& parameters);
     bool reconstructFromSkeleton(MeshDocument& md, const RichParameterList& parameters, vcg::CallBackPos* cb);
+    bool measureBranches(MeshDocument& md, const RichParameterList& parameters);
 
     QString failure_;  // why the last filter failed, for MeshLab's error message
 };

@@ -14,6 +14,7 @@ const char* const kInputIndexAttribute = "pcs_input_index";
 const char* const kRadiusAttribute = "pcs_radius";
 const char* const kInferredAttribute = "pcs_inferred";
 const char* const kNodeAttribute = "pcs_node";
+const char* const kBranchAttribute = "pcs_branch";
 const char* const kCorrespondenceAttribute = "pcs_correspondence";
 const char* const kSourceLayerAttribute = "pcs_source_layer";
 
@@ -174,20 +175,24 @@ void writeSkeletonLayer(MeshModel& layer, const SkeletonGraph& skeleton) {
     updateBoxAndNormals(layer);
 }
 
-MeshModel* addSegmentsLayer(MeshDocument& md, const LayerPoints& input,
-                            const SkeletonGraph& skeleton, const QString& label) {
+MeshModel* addLabelledPointLayer(MeshDocument& md, const LayerPoints& input, const std::vector<int>& labels,
+                                 int labelCount, const char* attribute, const QString& label) {
     MeshModel* layer = addPointCopy(md, input, input.points, label);
     layer->updateDataMask(MeshModel::MM_VERTCOLOR);
-    auto node = Allocator::GetPerVertexAttribute<int>(layer->cm, kNodeAttribute);
-    const int nodeCount = std::max<int>(1, int(skeleton.nodeCount()));
+    auto value = Allocator::GetPerVertexAttribute<int>(layer->cm, attribute);
     for (std::size_t i = 0; i < input.points.size(); ++i) {
         CVertexO& v = layer->cm.vert[i];
-        node[v] = skeleton.pointNode[i];
-        v.C() = skeleton.pointNode[i] < 0 ? vcg::Color4b(vcg::Color4b::Gray)
-                                          : vcg::Color4b::Scatter(nodeCount, skeleton.pointNode[i], .6f, .9f);
+        value[v] = labels[i];
+        v.C() = labels[i] < 0 ? vcg::Color4b(vcg::Color4b::Gray)
+                              : vcg::Color4b::Scatter(std::max(1, labelCount), labels[i], .6f, .9f);
     }
     updateBoxAndNormals(*layer);
     return layer;
+}
+
+MeshModel* addSegmentsLayer(MeshDocument& md, const LayerPoints& input,
+                            const SkeletonGraph& skeleton, const QString& label) {
+    return addLabelledPointLayer(md, input, skeleton.pointNode, int(skeleton.nodeCount()), kNodeAttribute, label);
 }
 
 MeshModel* sourceLayerOf(MeshDocument& md, const MeshModel& layer) {

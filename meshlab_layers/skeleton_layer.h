@@ -18,6 +18,7 @@ namespace pcskeleton::meshlab {
 extern const char* const kInputIndexAttribute;      // per vertex, int: source vertex of a contracted point
 extern const char* const kRadiusAttribute;          // per vertex, float: node radius
 extern const char* const kNodeAttribute;            // per vertex, int: a point's node (segments layer)
+extern const char* const kBranchAttribute;          // per vertex, int: a point's branch (branches layer)
 extern const char* const kInferredAttribute;        // per edge, unsigned char: 1 for a bone the data does not show
 extern const char* const kCorrespondenceAttribute;  // per mesh, std::vector<int>
 extern const char* const kSourceLayerAttribute;     // per mesh, int: MeshModel id
@@ -47,6 +48,11 @@ MeshModel* addPointLayer(MeshDocument& md, const MeshModel& source, const LayerP
 
 MeshModel* addSkeletonLayer(MeshDocument& md, const MeshModel& source, const LayerPoints& input,
                             const SkeletonGraph& skeleton, const QString& label);
+
+// A copy of the points of `input`, each coloured by its label (grey for -1) and carrying it
+// as the per-vertex int attribute `attribute`; labels run from 0 to labelCount - 1.
+MeshModel* addLabelledPointLayer(MeshDocument& md, const LayerPoints& input, const std::vector<int>& labels,
+                                 int labelCount, const char* attribute, const QString& label);
 
 // A copy of the source points, each coloured by its node and carrying pcs_node.
 MeshModel* addSegmentsLayer(MeshDocument& md, const LayerPoints& input,

@@ -55,6 +55,17 @@ grep -q "it is the file of the open layer" double/clobber.log \
   || { cat double/clobber.log; echo "FAIL: writing over the open file was not refused"; exit 1; }
 cmp -s first_run.ply double/double-torus-example_skeleton.ply || { echo "FAIL: the open file was overwritten"; exit 1; }
 
+# The branches script: the knot is one branch that closes its loop, logged and written.
+mkdir -p branches && cp data/meshes/knot.off branches/
+(cd branches && server run.log -i knot.off -s "$SCRIPTS/measure_branches.mlx")
+grep -q "Branches of 'knot skeleton' (up axis +Z): 1 branch (order 1: 1)" branches/run.log \
+  && grep -q "branch 0: order 1, from the root, .*closes a loop" branches/run.log \
+  || { cat branches/run.log; echo "FAIL: the log does not give the knot's one branch closing its loop"; exit 1; }
+[ "$(wc -l <branches/branches.csv)" = 2 ] && head -1 branches/branches.csv | grep -q "^branch,parent,order," \
+  || { cat branches/branches.csv; echo "FAIL: branches.csv is not a header and one branch"; exit 1; }
+(cd branches && xvfb-run -a "$MESHLABSERVER" -i knot.off -s "$SCRIPTS/measure_branches.mlx" >again.log 2>&1 || true)
+grep -q "exists already" branches/again.log || { cat branches/again.log; echo "FAIL: branches.csv was replaced"; exit 1; }
+
 # Contraction and thinning as two filters: a knot is one loop without tips.
 mkdir -p knot && cp data/meshes/knot.off knot/
 (cd knot && server run.log -i knot.off -s "$SCRIPTS/contract_then_thin.mlx")

@@ -24,6 +24,22 @@ inline constexpr const char* kConnectFilter = "Skeleton: Connect the Two Selecte
 inline constexpr const char* kMergeFilter = "Skeleton: Merge Selected Nodes";
 inline constexpr const char* kRadiusFilter = "Skeleton: Set Radius of Selected Nodes";
 inline constexpr const char* kReconstructFilter = "Reconstruct Surface from Skeleton";
+inline constexpr const char* kBranchesFilter = "Measure Skeleton Branches";
+
+// What the plugin logs while it lives, by level.
+struct LogCapture {
+    explicit LogCapture(MeshFilterInterface* plugin) : plugin_(plugin) { plugin->setLog(&log); }
+    ~LogCapture() { plugin_->setLog(nullptr); }
+    QString text(int level) const {
+        QString all;
+        for (const auto& entry : log.logStringList()) {
+            if (entry.first == level) all += entry.second + "\n";
+        }
+        return all;
+    }
+    GLLogStream log;
+    MeshFilterInterface* plugin_;
+};
 
 class FilterPluginTest : public ::testing::Test {
 protected:

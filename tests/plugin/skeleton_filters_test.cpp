@@ -237,25 +237,6 @@ TEST_F(SkeletonFilterTest, ExportNeverWritesOverAnOpenLayerOrAnExistingFileUnles
     std::system(("rm -rf '" + dir + "'").c_str());
 }
 
-namespace {
-
-// The log lines a filter wrote, each with its level.
-struct LogCapture {
-    explicit LogCapture(MeshFilterInterface* plugin) : plugin_(plugin) { plugin->setLog(&log); }
-    ~LogCapture() { plugin_->setLog(nullptr); }
-    QString text(int level) const {
-        QString all;
-        for (const auto& entry : log.logStringList()) {
-            if (entry.first == level) all += entry.second + "\n";
-        }
-        return all;
-    }
-    GLLogStream log;
-    MeshFilterInterface* plugin_;
-};
-
-}  // namespace
-
 TEST_F(SkeletonFilterTest, LogsTheQualityReportWithItsWarningsAsWarnings) {
     LogCapture capture(plugin);
     addPointLayer(pcskeleton::shapes::torus(4000, 1.0, 0.25), "torus");
