@@ -1,7 +1,9 @@
 // Accuracy of the branch measures (skeleton_branches.h) on shapes whose answers are known,
 // clean and with 1% noise: limb lengths and angles of a Y and of a five-armed star, the
-// radius profile of a tapered tube, and how many of a Y's points land in the branch of the
-// limb they were sampled from.
+// radius profile of a tapered tube, how many of a Y's points land in the branch of the
+// limb they were sampled from, and a small tree of three orders (the robustness suite's):
+// its branch count, total length, volume and orders. The tree's truth is measureBranches
+// on its exact curve skeleton (the tube's centre curve), each tip a radius longer (the cap).
 //
 // A limb's true length runs from its junction (or the shape's end) to the end of the shape,
 // cap included: what a ruler laid along the object measures. Each true limb is matched to
@@ -146,6 +148,47 @@ void measureTaper(double noise, std::size_t n) {
                 noise > 0 ? "1%" : "clean", total > 0 ? 100 * within / total : 0.0, 100 * (measured - volume) / volume);
 }
 
+void measureTree(double noise, std::size_t n) {
+    const double radius = 0.06;
+    // The suite's tree made lopsided (the right side lower and shorter), so that the main
+    // axis is not a tie.
+    const Point fork(0, 0, 0.8), left(-0.4, 0, 1.3), right(0.35, 0, 1.2);
+    const shapes::Polyline tree{{Point(0, 0, 0), fork},           {fork, left},
+                                {fork, right},                    {left, Point(-0.55, 0.25, 1.75)},
+                                {left, Point(-0.65, -0.2, 1.65)}, {right, Point(0.5, 0.2, 1.55)},
+                                {right, Point(0.6, -0.2, 1.5)}};
+    const SkeletonGraph exact = shapes::curveSkeleton(tree, radius);
+    const SkeletonBranches truth = measureBranches(exact);
+    PointList points = shapes::tube(tree, radius, n);
+    if (noise > 0) points = shapes::withNoise(points, noise);
+    const SkeletonResult result = computeCurveSkeleton(points);
+    const SkeletonBranches b = measureBranches(result.skeleton);
+    double trueLength = 0, length = 0, trueVolume = 0, volume = 0;
+    int ordersRight = 0, ordersJudged = 0;
+    const std::vector<int> degree = nodeDegrees(exact.nodeCount(), exact.edges);
+    for (const Branch& branch : truth.branches) {
+        // Tips and the root end a radius past the curve (the cap).
+        trueLength += branch.length + radius * (degree[std::size_t(branch.nodes.back())] == 1);
+        trueVolume += branch.volume;
+        if (branch.length < 3 * result.quality.nodeSpacing) continue;
+        // The measured branch holding the node nearest to the middle of the true one.
+        const Point middle = (exact.nodes[std::size_t(branch.nodes.front())] + exact.nodes[std::size_t(branch.nodes.back())]) / 2;
+        std::size_t nearest = 0;
+        for (std::size_t m = 1; m < result.skeleton.nodeCount(); ++m) {
+            if ((result.skeleton.nodes[m] - middle).norm() < (result.skeleton.nodes[nearest] - middle).norm()) nearest = m;
+        }
+        const int found = b.nodeBranch[nearest];
+        ++ordersJudged;
+        ordersRight += found >= 0 && b.branches[std::size_t(found)].order == branch.order;
+    }
+    trueLength += radius;  // the root's cap
+    for (const Branch& branch : b.branches) length += branch.length, volume += branch.volume;
+    std::printf("tree   %-6s branches %zu/%zu, total length %+.1f%%, volume %+.1f%%, orders right %d/%d\n",
+                noise > 0 ? "1%" : "clean", b.branches.size(), truth.branches.size(),
+                100 * (length - trueLength) / trueLength, 100 * (volume - trueVolume) / trueVolume, ordersRight,
+                ordersJudged);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -159,5 +202,6 @@ int main(int argc, char** argv) {
         for (double noise : {0.0, 0.01}) measureLimbs(shape, noise, n);
     }
     for (double noise : {0.0, 0.01}) measureTaper(noise, n);
+    for (double noise : {0.0, 0.01}) measureTree(noise, n);
     return 0;
 }
