@@ -465,6 +465,16 @@ def test_the_readme_example_draws_its_picture(tmp_path):
     assert "Skeleton: " in run.stdout and picture.stat().st_size > 10000
 
 
+def test_the_branches_example_colours_the_corn_by_branch(tmp_path):
+    pytest.importorskip("matplotlib")
+    example = os.path.join(os.path.dirname(__file__), "..", "examples", "branches_picture.py")
+    picture = tmp_path / "corn.png"
+    run = subprocess.run([sys.executable, example, "", str(picture)], capture_output=True, text=True, cwd=tmp_path)
+    assert run.returncode == 0, run.stderr
+    assert "<pcskeleton.Branches: " in run.stdout and "branch 0: order 1" in run.stdout
+    assert picture.stat().st_size > 10000
+
+
 def test_skeleton_arrays_are_read_only_views_that_keep_it_alive(torus_points):
     s = pcskeleton.skeletonize(torus_points)
     nodes, edges = s.nodes, s.edges

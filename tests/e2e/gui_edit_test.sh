@@ -31,7 +31,7 @@ expect_nodes() {  # yellow, red, screenshot name
 # each version: Filters, Filters > Point Set, Export Skeleton in it, and the tool panel's
 # "Reconstruct from skeleton" button.
 case "$VERSION" in
-  2020.*) FILTERS=(120 10); POINT_SET=(160 386); EXPORT_ITEM=(640 536); RECONSTRUCT_BUTTON=(1074 326) ;;
+  2020.*) FILTERS=(120 10); POINT_SET=(160 386); EXPORT_ITEM=(640 512); RECONSTRUCT_BUTTON=(1074 326) ;;
   2022.*|2025.*) FILTERS=(116 9); POINT_SET=(150 355); EXPORT_ITEM=(634 493); RECONSTRUCT_BUTTON=(1082 293) ;;
   *) echo "FAIL: no screen positions for MeshLab $VERSION"; exit 1 ;;
 esac
