@@ -456,22 +456,24 @@ def test_no_memory_growth_over_repeated_calls():
     assert growth < 5, f"{growth:.1f} MB more after 100 calls"
 
 
-def test_the_readme_example_draws_its_picture(tmp_path):
+def _run_example(name, tmp_path):
+    """Runs python/examples/NAME on its default input; returns its output and its picture."""
     pytest.importorskip("matplotlib")
-    example = os.path.join(os.path.dirname(__file__), "..", "examples", "skeleton_picture.py")
-    picture = tmp_path / "elephant.png"
+    example = os.path.join(os.path.dirname(__file__), "..", "examples", name)
+    picture = tmp_path / "picture.png"
     run = subprocess.run([sys.executable, example, "", str(picture)], capture_output=True, text=True, cwd=tmp_path)
     assert run.returncode == 0, run.stderr
-    assert "Skeleton: " in run.stdout and picture.stat().st_size > 10000
+    return run.stdout, picture
+
+
+def test_the_readme_example_draws_its_picture(tmp_path):
+    output, picture = _run_example("skeleton_picture.py", tmp_path)
+    assert "Skeleton: " in output and picture.stat().st_size > 10000
 
 
 def test_the_branches_example_colours_the_corn_by_branch(tmp_path):
-    pytest.importorskip("matplotlib")
-    example = os.path.join(os.path.dirname(__file__), "..", "examples", "branches_picture.py")
-    picture = tmp_path / "corn.png"
-    run = subprocess.run([sys.executable, example, "", str(picture)], capture_output=True, text=True, cwd=tmp_path)
-    assert run.returncode == 0, run.stderr
-    assert "<pcskeleton.Branches: " in run.stdout and "branch 0: order 1" in run.stdout
+    output, picture = _run_example("branches_picture.py", tmp_path)
+    assert "<pcskeleton.Branches: " in output and "branch 0: order 1" in output
     assert picture.stat().st_size > 10000
 
 
