@@ -32,6 +32,8 @@ struct Options {
     std::string skeleton;  // a given (edited) skeleton to reconstruct from, instead of computing one
     std::string surface;   // where to write the reconstructed surface
     std::string branches, pointBranches;  // the branch table; each point's branch
+    pcskeleton::BranchOptions branchOptions;  // --up, --root
+    bool branchOptionsGiven = false;
     bool paper = false;
     std::vector<std::pair<Parameter, double>> given;  // the parameter table's options, as given
     Settings settings;  // made from `paper` and `given` once all options are read
@@ -146,6 +148,10 @@ void printHelp() {
         "                        angle to its parent and points; .csv or .json\n"
         "  --point-branches FILE also write each input point's branch and place along it\n"
         "                        (0 at the base, 1 at the tip), in the input's order; .csv\n"
+        "  --up X,Y,Z            with --branches: parts grow from their lowest node along\n"
+        "                        this axis (default 0,0,1)\n"
+        "  --root N              with --branches: the part of node N grows from it (nodes\n"
+        "                        numbered as in the skeleton file, from 0)\n"
         "  --report FILE         also write the quality report to FILE\n"
         "  --paper               the paper's pipeline exactly: every step it does not have\n"
         "                        is off, then every other option given applies on top,\n"
@@ -281,6 +287,25 @@ bool parseArguments(int argc, char** argv, Options& options) {
             options.force = true;
         } else if (arg == "--paper") {
             options.paper = true;
+        } else if (arg == "--up" || arg == "--root") {
+            if (i + 1 >= argc) throw UsageError(arg + " needs a value");
+            const std::string text = argv[++i];
+            options.branchOptionsGiven = true;
+            if (arg == "--root") {
+                options.branchOptions.root = parseInteger(arg, text);
+            } else {
+                std::vector<double> axis;
+                std::size_t start = 0;
+                for (std::size_t comma; (comma = text.find(',', start)) != std::string::npos; start = comma + 1) {
+                    axis.push_back(parseNumber(arg, text.substr(start, comma - start)));
+                }
+                axis.push_back(parseNumber(arg, text.substr(start)));
+                if (axis.size() != 3) throw UsageError("--up expects three numbers X,Y,Z, got '" + text + "'");
+                options.branchOptions.up = Point(axis[0], axis[1], axis[2]);
+                if (!options.branchOptions.up.allFinite() || !(options.branchOptions.up.norm() > 0.0)) {
+                    throw UsageError("--up " + text + " has no direction: give one such as 0,0,1");
+                }
+            }
         } else if (auto file = files.find(arg); file != files.end()) {
             if (i + 1 >= argc) throw UsageError(arg + " needs a value");
             *file->second = argv[++i];
@@ -324,6 +349,9 @@ bool parseArguments(int argc, char** argv, Options& options) {
     }
     if (!options.pointBranches.empty() && extensionOf(options.pointBranches) != "csv") {
         throw UsageError("the points' branches must end in .csv");
+    }
+    if (options.branchOptionsGiven && options.branches.empty() && options.pointBranches.empty()) {
+        throw UsageError("--up and --root choose where branches grow from: add --branches FILE or --point-branches FILE");
     }
     checkOutputs(options);
     return true;
@@ -397,7 +425,7 @@ int main(int argc, char** argv) {
         }
         SkeletonBranches branches;
         if (!options.branches.empty() || !options.pointBranches.empty()) {
-            branches = measureBranches(result.skeleton);
+            branches = measureBranches(result.skeleton, options.branchOptions);
             if (!options.branches.empty()) writes.emplace_back(options.branches, [&] { writeBranchTable(branches, options.branches); });
             if (!options.pointBranches.empty()) {
                 writes.emplace_back(options.pointBranches, [&] { writePointBranches(branches, options.pointBranches); });

@@ -411,6 +411,26 @@ grep -q "^Branches: $rows branches (order 1: " elephant_branches.log \
   || fail "elephant_points.csv: not one line per point after the header"
 awk -F, -v rows="$rows" 'NR > 1 && ($1 < -1 || $1 >= rows || ($1 >= 0 && ($2 < 0 || $2 > 1))) { exit 1 }' \
   elephant_points.csv || fail "a point's branch or place is out of range"
+# --up and --root: the elephant seen growing from its highest node along z, then from node 0.
+"$PCSKELETON" $M/elephant.off -o elephant_down.ply --branches elephant_down.csv --up 0,0,-1 --quiet
+"$PCSKELETON" $M/elephant.off -o elephant_root.ply --branches elephant_root.csv --root 0 --quiet
+/usr/bin/python3 - elephant_down.ply elephant_down.csv elephant_root.csv <<'PY' || fail "--up or --root not followed"
+import sys
+text = open(sys.argv[1]).read()
+n = int(text.split("element vertex ")[1].split()[0])
+z = [float(l.split()[2]) for l in text.split("end_header\n")[1].split("\n")[:n]]
+def bases(path):
+    rows = [l.split(",") for l in open(path).read().splitlines()[1:]]
+    return [int(r[3]) for r in rows if r[1] == "-1"]
+assert bases(sys.argv[2]) == [max(range(n), key=lambda i: (z[i], -i))], (bases(sys.argv[2]), max(z))
+assert bases(sys.argv[3]) and set(bases(sys.argv[3])) == {0}, bases(sys.argv[3])
+PY
+expect_error 2 "^pcskeleton: --up expects three numbers X,Y,Z" $M/knot.off -o b.ply --branches b.csv --up 0,1
+expect_error 2 "add --branches FILE or --point-branches FILE" $M/knot.off -o b.ply --root 3
+expect_error 2 "^pcskeleton: --up 0,0,0 has no direction" $M/knot.off -o b.ply --branches b.csv --up 0,0,0
+# The root is checked once the skeleton's nodes are known: after the work, before any output.
+expect_error 1 "is not a node of the skeleton" $M/knot.off -o b.ply --branches b.csv --root 100000 --quiet
+[ ! -e b.ply ] && [ ! -e b.csv ] || fail "a refused root left $(ls b.* | tr '\n' ' ')"
 expect_error 2 "the branch table must end in .csv or .json" $M/knot.off -o b.ply --branches b.txt
 expect_error 2 "the points' branches must end in .csv" $M/knot.off -o b.ply --point-branches b.json
 expect_error 2 "leave out -o, --contracted, --correspondence and --point-branches" \
