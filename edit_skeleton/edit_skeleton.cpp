@@ -6,6 +6,7 @@
 #include <meshlab_layers/meshlab_terms.h>
 #include <meshlab_layers/reconstruction_layer.h>
 #include <meshlab_layers/skeleton_layer.h>
+#include <pcskeleton/io/branch_io.h>
 
 #include <GL/glew.h>
 
@@ -271,6 +272,7 @@ void EditSkeletonTool::refreshPanel() {
     state.counts = QString::fromStdString(describe(analyseTopology(g)));
     const std::vector<int> nodes = selection();
     state.selected = static_cast<int>(nodes.size());
+    if (!nodes.empty()) state.branches = QString::fromStdString(describeBranchesOf(measureBranches(g), nodes));
     state.selectedAreConnected =
         nodes.size() == 2 && hasEdge(g.edges, nodes[0], nodes[1]);
     state.canUndo = editor_->canUndo();

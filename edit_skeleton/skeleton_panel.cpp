@@ -51,6 +51,11 @@ SkeletonPanel::SkeletonPanel(QWidget* parent) : QDockWidget("Edit Skeleton", par
     message_->setWordWrap(true);
     layout->addWidget(message_);
 
+    // Below the buttons, which keep their places whatever its length.
+    branches_ = new QLabel(body);
+    branches_->setWordWrap(true);
+    layout->addWidget(branches_);
+
     auto* help = new QLabel(
         "<small>Click a node to select it, Shift+click to add or remove one, drag on empty space to select "
         "in a rectangle, drag a selected node to move the selection parallel to the screen. Right-drag "
@@ -85,6 +90,7 @@ QPushButton* SkeletonPanel::addButton(const QString& text, const QString& key, c
 void SkeletonPanel::showState(const State& state) {
     counts_->setText(state.counts);
     selection_->setText(QString("%1 selected").arg(state.selected));
+    branches_->setText(state.branches.isEmpty() ? QString() : "The selection is on " + state.branches + ".");
     delete_->setEnabled(state.selected > 0);
     connect_->setEnabled(state.selected == 2 && !state.selectedAreConnected);
     disconnect_->setEnabled(state.selectedAreConnected);

@@ -1,5 +1,6 @@
 // The editor's dock panel: the skeleton's counts, live; one button per operation with its
-// key; the outcome of the last operation.
+// key; the outcome of the last operation; the branch the selection lies on (its order,
+// length and radii).
 #pragma once
 
 #include <QDockWidget>
@@ -20,6 +21,7 @@ public:
     struct State {
         QString counts;        // "12 nodes, 11 edges, ..."
         int selected = 0;      // selected nodes
+        QString branches;      // the branches the selection lies on ("branch 3: order 2, ...")
         bool selectedAreConnected = false;  // exactly two selected, joined by a bone
         bool canUndo = false, canRedo = false;
         QString undoText, redoText;
@@ -47,6 +49,7 @@ private:
     QLabel* counts_;
     QLabel* selection_;
     QLabel* message_;
+    QLabel* branches_;  // the branches the selection lies on
     QPushButton *delete_, *connect_, *disconnect_, *merge_, *split_, *radiusUp_, *radiusDown_, *undo_, *redo_, *reconstruct_;
     QCheckBox* radiusField_;
 };

@@ -75,3 +75,11 @@ TEST(BranchIo, OtherNamesAreRefusedAndNothingIsWritten) {
     EXPECT_THROW(writePointBranches(stemAndArm(), dir.file("points.json")), InvalidInput);
     EXPECT_EQ(describe(stemAndArm()), "3 branches (order 1: 2, order 2: 1), 2.1 long in all");
 }
+
+TEST(BranchIo, ASelectionIsDescribedByTheBranchesItLiesOn) {
+    const SkeletonBranches b = stemAndArm();
+    EXPECT_EQ(describeBranchesOf(b, {1}), "branch 0: order 1, 1 long, radius 0.2 at the base and 0.1 at the tip");
+    EXPECT_EQ(describeBranchesOf(b, {3, 4}), "2 branches, 1.1 long in all");
+    EXPECT_EQ(describeBranchesOf(b, {}), "");
+    EXPECT_EQ(describeBranchesOf(b, {-1, 99}), "") << "nodes that are none are ignored";
+}

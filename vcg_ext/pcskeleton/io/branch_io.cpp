@@ -7,6 +7,7 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <set>
 #include <ostream>
 #include <sstream>
 
@@ -94,6 +95,28 @@ void writePointBranches(const SkeletonBranches& branches, const std::string& pat
             }
         });
     });
+}
+
+std::string describeBranchesOf(const SkeletonBranches& branches, const std::vector<int>& nodes) {
+    std::set<int> on;
+    for (int n : nodes) {
+        if (n >= 0 && std::size_t(n) < branches.nodeBranch.size() && branches.nodeBranch[std::size_t(n)] >= 0) {
+            on.insert(branches.nodeBranch[std::size_t(n)]);
+        }
+    }
+    if (on.empty()) return "";
+    std::ostringstream text;
+    text.precision(6);
+    if (on.size() == 1) {
+        const Branch& b = branches.branches[std::size_t(*on.begin())];
+        text << "branch " << *on.begin() << ": order " << b.order << ", " << b.length << " long, radius "
+             << b.baseRadius << " at the base and " << b.tipRadius << " at the tip";
+    } else {
+        double length = 0.0;
+        for (int b : on) length += branches.branches[std::size_t(b)].length;
+        text << on.size() << " branches, " << length << " long in all";
+    }
+    return text.str();
 }
 
 std::string describe(const SkeletonBranches& branches) {

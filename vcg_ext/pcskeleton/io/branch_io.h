@@ -5,6 +5,7 @@
 #include "pcskeleton/skeleton/skeleton_branches.h"
 
 #include <string>
+#include <vector>
 
 namespace pcskeleton {
 
@@ -21,6 +22,11 @@ void writeBranchTable(const SkeletonBranches& branches, const std::string& path)
 // branch (-1 for a point with no node) and its place along it, 0 at the base and 1 at the
 // tip (empty for none). Written atomically; throws InvalidInput.
 void writePointBranches(const SkeletonBranches& branches, const std::string& path);
+
+// What a selection of nodes lies on (6 significant digits): "branch 3: order 2, 0.42 long,
+// radius 0.05 at the base and 0.03 at the tip" for nodes of one branch, "3 branches,
+// 1.27 long in all" for nodes of several, "" for none. Nodes without a branch are ignored.
+std::string describeBranchesOf(const SkeletonBranches& branches, const std::vector<int>& nodes);
 
 // "7 branches (order 1: 2, order 2: 5), 3.42 long in all" (6 significant digits): the
 // report's line.
