@@ -1,6 +1,8 @@
 #include "pcskeleton/skeleton/skeleton_branches.h"
 
 #include "pcskeleton/core/errors.h"
+#include "pcskeleton/internal/disjoint_sets.h"
+#include "pcskeleton/skeleton/skeleton_structure.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,27 +16,19 @@ namespace pcskeleton {
 namespace {
 
 // Each part's root: its lowest node along `up` (the lowest index among equals), or
-// `chosen` for the part holding it.
-std::vector<int> partRoots(const std::vector<std::vector<int>>& neighbours, const PointList& nodes, const Point& up,
-                           int chosen) {
-    std::vector<int> part(nodes.size(), -1), roots;
-    for (std::size_t start = 0; start < nodes.size(); ++start) {
-        if (part[start] >= 0) continue;
-        const int id = int(roots.size());
-        int lowest = int(start);
-        std::vector<int> stack{int(start)};
-        part[start] = id;
-        while (!stack.empty()) {
-            const int n = stack.back();
-            stack.pop_back();
-            if (nodes[n].dot(up) < nodes[lowest].dot(up)) lowest = n;
-            for (int m : neighbours[n]) {
-                if (part[m] < 0) part[m] = id, stack.push_back(m);
-            }
-        }
-        roots.push_back(lowest);
+// `chosen` for the part holding it; parts in the order of their lowest-numbered node.
+std::vector<int> partRoots(const SkeletonGraph& skeleton, const Point& up, int chosen) {
+    DisjointSets parts(skeleton.nodeCount());
+    for (const Edge& e : skeleton.edges) parts.unite(e[0], e[1]);
+    std::vector<int> rootOf(skeleton.nodeCount(), -1), order;  // by each part's representative
+    for (std::size_t n = 0; n < skeleton.nodeCount(); ++n) {
+        int& root = rootOf[std::size_t(parts.find(int(n)))];
+        if (root < 0) order.push_back(parts.find(int(n)));
+        if (root < 0 || skeleton.nodes[n].dot(up) < skeleton.nodes[std::size_t(root)].dot(up)) root = int(n);
     }
-    if (chosen >= 0) roots[part[chosen]] = chosen;
+    if (chosen >= 0) rootOf[std::size_t(parts.find(chosen))] = chosen;
+    std::vector<int> roots;
+    for (int part : order) roots.push_back(rootOf[std::size_t(part)]);
     return roots;
 }
 
@@ -43,12 +37,19 @@ double angleDegrees(const Point& a, const Point& b) {
     return std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0)) * 180.0 / M_PI;
 }
 
-void measureShape(const SkeletonGraph& skeleton, Branch& branch) {
+// The length of each bone of a path: bones[i] joins path[i - 1] and path[i] (bones[0] = 0).
+std::vector<double> boneLengths(const SkeletonGraph& skeleton, const std::vector<int>& path) {
+    std::vector<double> bones(path.size(), 0.0);
+    for (std::size_t i = 1; i < path.size(); ++i) bones[i] = (skeleton.nodes[path[i]] - skeleton.nodes[path[i - 1]]).norm();
+    return bones;
+}
+
+void measureShape(const SkeletonGraph& skeleton, const std::vector<double>& bones, Branch& branch) {
     const std::vector<int>& path = branch.nodes;
     const auto radius = [&](int n) { return skeleton.radii[std::size_t(n)]; };
     double radiusLength = 0.0;
     for (std::size_t i = 1; i < path.size(); ++i) {
-        const double h = (skeleton.nodes[path[i]] - skeleton.nodes[path[i - 1]]).norm();
+        const double h = bones[i];
         const double a = radius(path[i - 1]), b = radius(path[i]);
         branch.length += h;
         radiusLength += h * (a + b) / 2.0;
@@ -123,7 +124,7 @@ SkeletonBranches measureBranches(const SkeletonGraph& skeleton, const BranchOpti
     std::set<Edge> walked;
     const auto walk = [&](int a, int b) { return walked.insert(Edge{std::min(a, b), std::max(a, b)}).second; };
 
-    for (int root : partRoots(neighbours, skeleton.nodes, options.up, options.root)) {
+    for (int root : partRoots(skeleton, options.up, options.root)) {
         if (neighbours[root].empty()) continue;  // an isolated node has no branch
         reached[root] = true;
         const std::size_t first = branches.size();
@@ -132,29 +133,21 @@ SkeletonBranches measureBranches(const SkeletonGraph& skeleton, const BranchOpti
             const auto [base, parent] = junctions.front();
             junctions.pop_front();
             for (int next : neighbours[base]) {
+                // A chain's bones are walked together, so one walked bone means all are.
                 if (!walk(base, next)) continue;
                 Branch branch;
                 branch.parent = parent;
-                branch.nodes = {base};
-                int previous = base, current = next;
-                while (true) {
-                    branch.nodes.push_back(current);
-                    if (reached[current]) {
-                        branch.closesLoop = true;
-                        break;
-                    }
-                    reached[current] = true;
-                    if (neighbours[current].size() != 2) break;
-                    const int ahead = neighbours[current][0] == previous ? neighbours[current][1] : neighbours[current][0];
-                    if (!walk(current, ahead)) break;
-                    previous = current, current = ahead;
-                }
-                measureShape(skeleton, branch);
+                branch.nodes = walkChain(neighbours, base, next);
+                for (std::size_t i = 2; i < branch.nodes.size(); ++i) walk(branch.nodes[i - 1], branch.nodes[i]);
+                branch.closesLoop = reached[branch.nodes.back()];
+                const std::vector<double> bones = boneLengths(skeleton, branch.nodes);
+                measureShape(skeleton, bones, branch);
                 const int index = int(branches.size());
                 double along = 0.0;
                 for (std::size_t i = 1; i < branch.nodes.size(); ++i) {
                     const int n = branch.nodes[i];
-                    along += (skeleton.nodes[n] - skeleton.nodes[branch.nodes[i - 1]]).norm();
+                    along += bones[i];
+                    reached[n] = true;
                     if (result.nodeBranch[n] < 0) result.nodeBranch[n] = index, nodePosition[n] = along;
                 }
                 if (!branch.closesLoop && neighbours[branch.nodes.back()].size() >= 3) {

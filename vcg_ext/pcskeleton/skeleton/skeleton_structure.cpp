@@ -40,20 +40,6 @@ double medianPointsPerNode(const std::vector<std::vector<int>>& nodePoints) {
     return counts.empty() ? 0.0 : median(std::move(counts));
 }
 
-// Walks from `from` into `next` and on through nodes of degree 2; returns the nodes passed,
-// `from` first, ending at the first node whose degree is not 2 (or back at `from` on a
-// cycle without junctions).
-std::vector<int> walkChain(const std::vector<std::vector<int>>& neighbours, int from, int next) {
-    std::vector<int> path{from};
-    int previous = from, current = next;
-    while (true) {
-        path.push_back(current);
-        if (neighbours[current].size() != 2 || current == from) return path;
-        const int ahead = neighbours[current][0] == previous ? neighbours[current][1] : neighbours[current][0];
-        previous = current, current = ahead;
-    }
-}
-
 // The paths through nodes of degree 2 from a junction to another junction, each once
 // (from its lower-numbered junction); a path back to its own junction is not one.
 std::vector<std::vector<int>> junctionToJunctionPaths(const std::vector<std::vector<int>>& neighbours) {
@@ -164,6 +150,17 @@ std::vector<std::vector<int>> uTurnBridges(const SkeletonGraph& graph, const std
 }
 
 }  // namespace
+
+std::vector<int> walkChain(const std::vector<std::vector<int>>& neighbours, int from, int next) {
+    std::vector<int> path{from};
+    int previous = from, current = next;
+    while (true) {
+        path.push_back(current);
+        if (neighbours[current].size() != 2 || current == from) return path;
+        const int ahead = neighbours[current][0] == previous ? neighbours[current][1] : neighbours[current][0];
+        previous = current, current = ahead;
+    }
+}
 
 double pathLength(const SkeletonGraph& graph, const std::vector<int>& path) {
     double length = 0.0;

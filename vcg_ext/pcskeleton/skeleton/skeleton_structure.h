@@ -20,6 +20,11 @@
 
 namespace pcskeleton {
 
+// Walks from `from` into `next` and on through nodes of degree 2; returns the nodes passed,
+// `from` first, ending at the first node whose degree is not 2 (or back at `from` on a
+// cycle without junctions). `neighbours` as adjacencyLists gives them.
+std::vector<int> walkChain(const std::vector<std::vector<int>>& neighbours, int from, int next);
+
 // Total length of the bones along a node path.
 double pathLength(const SkeletonGraph& graph, const std::vector<int>& path);
 
