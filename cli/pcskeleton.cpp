@@ -4,11 +4,14 @@
 #include <pcskeleton/parameter_settings.h>
 #include <pcskeleton/core/openmp_wait_policy.h>
 #include <pcskeleton/reconstruction/skeleton_reconstruction.h>
+#include <pcskeleton/io/batch_files.h>
 #include <pcskeleton/io/branch_io.h>
 #include <pcskeleton/io/input_file.h>
 #include <pcskeleton/io/mesh_io.h>
 #include <pcskeleton/io/point_cloud_io.h>
 #include <pcskeleton/io/skeleton_io.h>
+
+#include "batch.h"
 
 #include <cerrno>
 #include <cstdio>
@@ -28,6 +31,7 @@ using namespace pcskeleton;
 namespace {
 
 struct Options {
+    std::vector<std::string> inputs;  // as given: files, folders, globs
     std::string input, output, contracted, correspondence, report;
     std::string skeleton;  // a given (edited) skeleton to reconstruct from, instead of computing one
     std::string surface;   // where to write the reconstructed surface
@@ -39,6 +43,13 @@ struct Options {
     Settings settings;  // made from `paper` and `given` once all options are read
     bool quiet = false;
     bool force = false;  // replace existing output files
+    // Several inputs: their outputs go into `outputFolder`, named by patterns ("{stem}_skeleton.ply").
+    std::string outputFolder, summary;
+    int jobs = 0;  // 0: one per core
+    std::vector<std::string> passedOn;  // the options every input's run gets: parameters, --paper, --up, --root
+    bool batchChild = false;  // run by a batch: print the summary line for it on stdout
+    std::vector<pcskeleton_cli::BatchInput> batchInputs;  // made from the above once all options are read
+    bool batch() const { return !outputFolder.empty() || inputs.size() > 1; }
 };
 
 class UsageError : public std::runtime_error {
@@ -117,6 +128,8 @@ void printHelp() {
         "       pcskeleton INPUT -o OUTPUT --surface SURFACE [...]  and the surface it gives\n"
         "       pcskeleton INPUT --skeleton SKELETON --surface SURFACE\n"
         "                                          the surface from a given (edited) skeleton\n"
+        "       pcskeleton INPUT... -O FOLDER [--jobs N] [--summary FILE.csv] [options]\n"
+        "                                          many scans, each one's outputs in FOLDER\n"
         "\n"
         "Extracts the curve skeleton of a point cloud by Laplacian-based contraction\n"
         "(Cao et al., SMI 2010): contraction, thinning, embedding. The paper's parameters\n"
@@ -160,6 +173,21 @@ void printHelp() {
         "  --force               replace output files that exist already (never the input)\n"
         "  --quiet               no progress and no summary on stderr\n"
         "  -h, --help            this text\n"
+        "\n"
+        "Several inputs (files, folders of point files, globs such as 'scans/*.ply'):\n"
+        "  -O FOLDER             write each input's outputs into FOLDER (made if missing);\n"
+        "                        every output option is then a file name in which {stem}\n"
+        "                        stands for the input's name: -o defaults to\n"
+        "                        {stem}_skeleton.ply, and e.g. --branches\n"
+        "                        {stem}_branches.csv adds a table per input. Inputs of\n"
+        "                        one name in different folders are told apart by their\n"
+        "                        folder (a_scan, b_scan)\n"
+        "  --jobs N              inputs run side by side, one thread each [one per core]\n"
+        "  --summary FILE        a table of the batch (.csv): input, points, nodes, cycles,\n"
+        "                        tips, parts, warnings, seconds, status, message\n"
+        "  An input whose outputs all exist is skipped (--force redoes it), so a rerun of\n"
+        "  the same command resumes. One input's failure is reported and the rest go on;\n"
+        "  the exit status is then 1, with the list of failures.\n"
         "\n"
         "After the run a quality report goes to stderr: cycles, tips, junctions, parts,\n"
         "whether contraction converged, and warnings (points that did not contract, parts\n"
@@ -213,6 +241,13 @@ int parseInteger(const std::string& option, const std::string& text) {
     return static_cast<int>(value);
 }
 
+// The file a path names, for comparing: its canonical form when it has one.
+std::string canonicalName(const std::string& path) {
+    std::error_code error;
+    const std::filesystem::path canonical = std::filesystem::weakly_canonical(path, error);
+    return error ? path : canonical.string();
+}
+
 bool samePath(const std::string& a, const std::string& b) {
     if (sameFile(a, b)) return true;
     std::error_code first, second;  // a name that cannot be resolved (a symlink loop) names no other file
@@ -221,16 +256,18 @@ bool samePath(const std::string& a, const std::string& b) {
     return !first && !second && x == y;
 }
 
+// Every output option and its file (with several inputs, its name pattern); -o first.
+std::vector<std::pair<std::string, std::string>> outputOptions(const Options& options) {
+    return {{"-o", options.output},         {"--contracted", options.contracted},
+            {"--correspondence", options.correspondence}, {"--report", options.report},
+            {"--surface", options.surface}, {"--branches", options.branches},
+            {"--point-branches", options.pointBranches}};
+}
+
 // Before any work: no output may be the input or another output, an existing output is
 // replaced only with --force, and each output's folder must exist.
 void checkOutputs(const Options& options) {
-    const std::vector<std::pair<std::string, std::string>> outputs = {{"-o", options.output},
-                                                                      {"--contracted", options.contracted},
-                                                                      {"--correspondence", options.correspondence},
-                                                                      {"--report", options.report},
-                                                                      {"--surface", options.surface},
-                                                                      {"--branches", options.branches},
-                                                                      {"--point-branches", options.pointBranches}};
+    const std::vector<std::pair<std::string, std::string>> outputs = outputOptions(options);
     for (std::size_t i = 0; i < outputs.size(); ++i) {
         const auto& [option, path] = outputs[i];
         if (path.empty()) continue;
@@ -253,6 +290,89 @@ void checkOutputs(const Options& options) {
         if (fileExists(path) && !options.force) {
             throw UsageError(option + " '" + path + "' exists already; choose another name or add --force to replace it");
         }
+    }
+}
+
+// Each output's kind from its name's extension.
+void checkOutputNames(const Options& options) {
+    if (!options.surface.empty() && !isMeshFileName(options.surface)) {
+        throw UsageError("the surface must end in .ply, .off or .obj");
+    }
+    if (!options.branches.empty() && !isBranchTableFileName(options.branches)) {
+        throw UsageError("the branch table must end in .csv or .json");
+    }
+    if (!options.pointBranches.empty() && extensionOf(options.pointBranches) != "csv") {
+        throw UsageError("the points' branches must end in .csv");
+    }
+    if (options.branchOptionsGiven && options.branches.empty() && options.pointBranches.empty()) {
+        throw UsageError("--up and --root choose where branches grow from: add --branches FILE or --point-branches FILE");
+    }
+}
+
+// Several inputs: every output option is a name pattern inside the output folder, "{stem}"
+// standing for the input's name; the plan is checked whole before any work (no output may
+// be an input, nor two outputs one file).
+void checkBatch(Options& options) {
+    if (options.outputFolder.empty()) {
+        throw UsageError("several inputs ('" + options.inputs[0] + "', '" + options.inputs[1] +
+                         "', ...): add -O FOLDER for their outputs");
+    }
+    if (!options.skeleton.empty()) throw UsageError("--skeleton takes one input: leave out -O and the other inputs");
+    if (options.output.empty()) options.output = "{stem}_skeleton.ply";
+    if (!isSkeletonFileName(options.output)) throw UsageError("the output must end in .ply, .obj or .cg");
+    checkOutputNames(options);
+    std::vector<std::string> inputs;
+    try {
+        inputs = expandInputs(options.inputs);
+    } catch (const std::exception& e) {
+        throw UsageError(e.what());
+    }
+    const std::vector<std::pair<std::string, std::string>> patterns = outputOptions(options);
+    for (const auto& [option, pattern] : patterns) {
+        if (pattern.empty()) continue;
+        if (pattern.find('/') != std::string::npos) {
+            throw UsageError(option + " '" + pattern + "': with -O, give a file name (the folder is -O's)");
+        }
+        if (inputs.size() > 1 && pattern.find("{stem}") == std::string::npos) {
+            throw UsageError(option + " '" + pattern + "' would name one file for every input: put {stem} in it, e.g. {stem}_" +
+                             pattern);
+        }
+    }
+    const std::vector<std::string> stems = outputStems(inputs);
+    std::map<std::string, std::string> outputOf;  // each output file: the input it is for
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
+        pcskeleton_cli::BatchInput batchInput{inputs[i], {}};
+        for (const auto& [option, pattern] : patterns) {
+            if (pattern.empty()) continue;
+            const std::string path = (std::filesystem::path(options.outputFolder) /
+                                      fromPattern(pattern, stems[i])).string();
+            for (const std::string& input : inputs) {
+                if (samePath(path, input)) {
+                    throw UsageError(option + " would write '" + path + "', which is an input; choose another -O or " +
+                                     option + " (inputs are never overwritten)");
+                }
+            }
+            if (!outputOf.emplace(canonicalName(path), inputs[i]).second) {
+                throw UsageError("two outputs would be '" + path + "'; give each output option its own pattern");
+            }
+            batchInput.outputs.emplace_back(option, path);
+        }
+        options.batchInputs.push_back(std::move(batchInput));
+    }
+    if (!options.summary.empty()) {
+        if (extensionOf(options.summary) != "csv") throw UsageError("the summary must end in .csv");
+        for (const std::string& input : inputs) {
+            if (samePath(options.summary, input)) throw UsageError("--summary '" + options.summary + "' is an input");
+        }
+        if (outputOf.count(canonicalName(options.summary))) {
+            throw UsageError("--summary '" + options.summary + "' is also one of the outputs");
+        }
+    }
+    std::error_code error;
+    std::filesystem::create_directories(options.outputFolder, error);
+    if (!std::filesystem::is_directory(options.outputFolder)) {
+        throw UsageError("-O '" + options.outputFolder + "' is not a folder and cannot be made one" +
+                         (error ? ": " + error.message() : std::string()));
     }
 }
 
@@ -280,16 +400,30 @@ bool parseArguments(int argc, char** argv, Options& options) {
     }
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
+        const auto value = [&]() -> std::string {
+            if (i + 1 >= argc) throw UsageError(arg + " needs a value");
+            return argv[++i];
+        };
         if (arg == "-h" || arg == "--help") return false;
         if (arg == "--quiet") {
             options.quiet = true;
         } else if (arg == "--force") {
             options.force = true;
+        } else if (arg == "--batch-child") {
+            options.batchChild = true;
         } else if (arg == "--paper") {
             options.paper = true;
+            options.passedOn.push_back(arg);
+        } else if (arg == "-O" || arg == "--output-folder") {
+            options.outputFolder = value();
+        } else if (arg == "--summary") {
+            options.summary = value();
+        } else if (arg == "--jobs") {
+            options.jobs = parseInteger(arg, value());
+            if (options.jobs < 1) throw UsageError("--jobs expects 1 or more runs at a time");
         } else if (arg == "--up" || arg == "--root") {
-            if (i + 1 >= argc) throw UsageError(arg + " needs a value");
-            const std::string text = argv[++i];
+            const std::string text = value();
+            options.passedOn.insert(options.passedOn.end(), {arg, text});
             options.branchOptionsGiven = true;
             if (arg == "--root") {
                 options.branchOptions.root = parseInteger(arg, text);
@@ -307,27 +441,30 @@ bool parseArguments(int argc, char** argv, Options& options) {
                 }
             }
         } else if (auto file = files.find(arg); file != files.end()) {
-            if (i + 1 >= argc) throw UsageError(arg + " needs a value");
-            *file->second = argv[++i];
+            *file->second = value();
         } else if (auto parameter = parameters.find(arg); parameter != parameters.end()) {
-            const auto [info, value] = parameter->second;
-            if (value >= 0) {
-                options.given.emplace_back(info->id, value);
+            const auto [info, fixed] = parameter->second;
+            options.passedOn.push_back(arg);
+            if (fixed >= 0) {
+                options.given.emplace_back(info->id, fixed);
             } else {
-                if (i + 1 >= argc) throw UsageError(arg + " needs a value");
-                const std::string text = argv[++i];
+                const std::string text = value();
+                options.passedOn.push_back(text);
                 options.given.emplace_back(info->id, info->type == ValueType::Integer ? parseInteger(arg, text)
                                                                                       : parseNumber(arg, text));
             }
         } else if (!arg.empty() && arg[0] == '-' && arg != "-") {
             throw UsageError("unknown option " + arg);
-        } else if (options.input.empty()) {
-            options.input = arg;
         } else {
-            throw UsageError("more than one input file ('" + options.input + "' and '" + arg + "')");
+            options.inputs.push_back(arg);
         }
     }
-    if (options.input.empty()) throw UsageError("no input file");
+    if (options.inputs.empty()) throw UsageError("no input file");
+    if (options.batch()) return checkBatch(options), true;
+    if (options.jobs > 0 || !options.summary.empty()) {
+        throw UsageError("--jobs and --summary are for several inputs: add -O FOLDER for their outputs");
+    }
+    options.input = options.inputs.front();
     if (!options.skeleton.empty()) {
         if (options.surface.empty() && options.branches.empty()) {
             throw UsageError("--skeleton is for reconstruction or measuring: add --surface FILE or --branches FILE");
@@ -341,18 +478,7 @@ bool parseArguments(int argc, char** argv, Options& options) {
         if (options.output.empty()) throw UsageError("no output file (-o FILE)");
         if (!isSkeletonFileName(options.output)) throw UsageError("the output must end in .ply, .obj or .cg");
     }
-    if (!options.surface.empty() && !isMeshFileName(options.surface)) {
-        throw UsageError("the surface must end in .ply, .off or .obj");
-    }
-    if (!options.branches.empty() && !isBranchTableFileName(options.branches)) {
-        throw UsageError("the branch table must end in .csv or .json");
-    }
-    if (!options.pointBranches.empty() && extensionOf(options.pointBranches) != "csv") {
-        throw UsageError("the points' branches must end in .csv");
-    }
-    if (options.branchOptionsGiven && options.branches.empty() && options.pointBranches.empty()) {
-        throw UsageError("--up and --root choose where branches grow from: add --branches FILE or --point-branches FILE");
-    }
+    checkOutputNames(options);
     checkOutputs(options);
     return true;
 }
@@ -389,6 +515,20 @@ int main(int argc, char** argv) {
     try {
         // Every value is checked here, before any work.
         options.settings = settingsFrom(options.paper, options.given);
+        if (options.batch()) {
+            pcskeleton_cli::BatchSettings batch;
+            batch.jobs = options.jobs > 0 ? options.jobs : int(std::max(1L, sysconf(_SC_NPROCESSORS_ONLN)));
+            batch.force = options.force;
+            batch.quiet = options.quiet;
+            batch.summary = options.summary;
+            batch.options = options.passedOn;
+            try {
+                return pcskeleton_cli::runBatch("/proc/self/exe", options.batchInputs, batch);
+            } catch (const std::runtime_error& e) {  // the batch itself, not one of its inputs
+                std::fprintf(stderr, "pcskeleton: %s\n", e.what());
+                return 1;
+            }
+        }
         const PointList points = readPointCloud(options.input);
         ProgressCallback progress;
         const bool showProgress = !options.quiet && isatty(fileno(stderr));
@@ -412,6 +552,11 @@ int main(int argc, char** argv) {
                 writes.emplace_back(options.correspondence, [&] { writeCorrespondence(result.skeleton, options.correspondence); });
             }
             report = describe(result.quality, commandLineTerms());
+            if (options.batchChild) {
+                const SkeletonTopology& t = result.quality.topology;
+                std::printf("%s\n", pcskeleton_cli::childSummaryLine(points.size(), t.nodes, t.cycles, t.tips, t.components,
+                                                                      result.quality.warnings().size()).c_str());
+            }
             if (!options.quiet) {
                 const StageSeconds& s = result.seconds;
                 std::fprintf(stderr,
