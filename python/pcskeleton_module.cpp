@@ -5,12 +5,15 @@
 #include <pcskeleton/parameter_settings.h>
 #include <pcskeleton/core/errors.h>
 #include <pcskeleton/editing/skeleton_editing.h>
+#include <pcskeleton/io/batch_files.h>
 #include <pcskeleton/io/mesh_io.h>
 #include <pcskeleton/io/point_cloud_io.h>
 #include <pcskeleton/io/skeleton_io.h>
 #include <pcskeleton/reconstruction/skeleton_reconstruction.h>
 #include <pcskeleton/skeleton/skeleton_branches.h>
 
+#include <malloc.h>
+#include <omp.h>
 #include <pybind11/functional.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -18,6 +21,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdlib>
 #include <cmath>
 #include <cstring>
 #include <functional>
@@ -269,6 +273,47 @@ py::array arrayOwning(std::vector<T> values) {
     auto* owned = new std::vector<T>(std::move(values));
     py::capsule free(owned, [](void* p) { delete static_cast<std::vector<T>*>(p); });
     return arrayOver(*owned, free);
+}
+
+// ---- Batches: one input per process (or Dask worker) -----------------------------------
+
+// glibc's malloc adapts its thresholds to a program's large arrays, unless a threshold is
+// fixed in the environment. Dask's worker processes fix one (MALLOC_TRIM_THRESHOLD_=65536,
+// to hand memory back to the system early), which also pins the mmap threshold at 128 KiB:
+// every large array of a skeletonization is then mapped and unmapped afresh, and an input
+// takes a third longer (docs/benchmarks.md#batches). During one batch input such a process
+// gets the upper bounds of glibc's own adaptive thresholds; afterwards its own settings come
+// back and the memory is handed back at once.
+class BatchInputMemory {
+public:
+    BatchInputMemory() : fixed_(std::getenv("MALLOC_TRIM_THRESHOLD_") || std::getenv("MALLOC_MMAP_THRESHOLD_")) {
+        if (!fixed_) return;
+        mallopt(M_MMAP_THRESHOLD, 32 << 20);
+        mallopt(M_TRIM_THRESHOLD, 64 << 20);
+    }
+    ~BatchInputMemory() {
+        if (!fixed_) return;
+        mallopt(M_MMAP_THRESHOLD, environmentValue("MALLOC_MMAP_THRESHOLD_", 128 << 10));
+        mallopt(M_TRIM_THRESHOLD, environmentValue("MALLOC_TRIM_THRESHOLD_", 128 << 10));
+        malloc_trim(0);
+    }
+    BatchInputMemory(const BatchInputMemory&) = delete;
+    BatchInputMemory& operator=(const BatchInputMemory&) = delete;
+
+private:
+    static int environmentValue(const char* name, int glibcDefault) {
+        const char* value = std::getenv(name);
+        return value ? std::atoi(value) : glibcDefault;
+    }
+    bool fixed_;
+};
+
+// Runs `work` as one input of a batch: on one OpenMP thread (the batch runs its inputs side
+// by side, one per core), with the memory settings above.
+py::object asBatchInput(const py::function& work) {
+    omp_set_num_threads(1);
+    const BatchInputMemory memory;
+    return work();
 }
 
 // ---- Progress: Python's callback, called with the GIL from the thread that started -------
@@ -559,6 +604,13 @@ PYBIND11_MODULE(_pcskeleton, m) {
         }
     });
 
+    m.def("_as_batch_input", &asBatchInput, py::arg("work"));
+    m.def("_expand_inputs", &expandInputs, py::arg("arguments"));
+    m.def("_output_stems", &outputStems, py::arg("inputs"));
+    m.def("_check_skeleton_parameters", [](const py::dict& kwargs, const char* function) {
+        settingsFrom(kwargs, false, function);
+    });
+
     m.def("skeleton_defaults", [] { return defaultsOf(false); });
     m.def("reconstruction_defaults", [] { return defaultsOf(true); });
     m.def("skeleton_help", [] { return helpOf(false); });
@@ -604,7 +656,33 @@ PYBIND11_MODULE(_pcskeleton, m) {
                  return branchesDict(measureBranches(s.graph, options));
              },
              py::arg("up"), py::arg("root"))
-        .def("__len__", [](const PySkeleton& s) { return s.graph.nodeCount(); });
+        .def("__len__", [](const PySkeleton& s) { return s.graph.nodeCount(); })
+        // Pickled as copies of its arrays and its report, so that a Skeleton crosses to
+        // other processes (a process pool, a Dask cluster) and back exactly.
+        .def(py::pickle(
+            [](const PySkeleton& s) {
+                const SkeletonGraph& g = s.graph;
+                const py::object contracted = s.contracted.empty() ? py::object(py::none()) : arrayOwning(s.contracted);
+                return py::make_tuple(arrayOwning(g.nodes), arrayOwning(g.edges), arrayOwning(g.radii),
+                                      arrayOwning(g.pointNode), arrayOwning(g.inferred), contracted, s.report);
+            },
+            [](const py::tuple& state) {
+                if (state.size() != 7) throw InvalidInput("Not a pickled pcskeleton.Skeleton.");
+                PySkeleton s;
+                SkeletonGraph& g = s.graph;
+                g.nodes = pointsFrom(state[0].cast<DoubleArray>(), "nodes");
+                g.edges = indexRowsFrom<2>(state[1], "edges");
+                const DoubleArray radii = state[2].cast<DoubleArray>();
+                g.radii.assign(radii.data(), radii.data() + radii.size());
+                std::vector<py::ssize_t> shape;
+                g.pointNode = indicesFrom(state[3], "correspondence", shape);
+                g.inferred = indexRowsFrom<2>(state[4], "inferred");
+                if (!state[5].is_none()) s.contracted = pointsFrom(state[5].cast<DoubleArray>(), "contracted");
+                s.report = state[6];
+                const std::string problem = invariantViolation(g);
+                if (!problem.empty()) throw InvalidInput("Not a valid pickled skeleton: " + problem + ".");
+                return s;
+            }));
 
     m.def("_skeletonize", [](const DoubleArray& points, const py::dict& kwargs, const py::object& progress) {
         const PointList input = pointsFrom(points, "points");

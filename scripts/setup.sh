@@ -25,6 +25,7 @@ PACKAGES=(
   meshlab dpkg-dev
   xvfb xauth xdotool imagemagick python3 python3-matplotlib python3-pil python3-numpy
   python3-dev pybind11-dev python3-pytest python3-networkx python3-open3d
+  python3-distributed
   libcgal-demo
   locales
 )

@@ -14,6 +14,7 @@ command-line tool and the MeshLab plugins.
     >>> print(skeleton.report["text"])                         # cycles, tips, warnings
     >>> skeleton.write("scan_skeleton.ply")                    # also .obj, .cg
     >>> graph = skeleton.to_networkx()                         # needs networkx
+    >>> rows = pcskeleton.skeletonize_files("scans/", "out/")  # many files, one per core
 
 Errors in the input (a file that is not a point cloud, too few points, a parameter out of
 range) raise ``ValueError`` with the library's message, which names the keyword to turn.
@@ -30,7 +31,7 @@ from ._pcskeleton import Skeleton, SkeletonEditor, read_points, read_skeleton, w
 __all__ = [
     "skeletonize", "Contraction", "skeleton_from_contraction", "reconstruct",
     "Skeleton", "SkeletonEditor", "read_points", "read_skeleton", "write_points", "write_mesh",
-    "SKELETON_PARAMETERS", "RECONSTRUCTION_PARAMETERS", "Branches",
+    "SKELETON_PARAMETERS", "RECONSTRUCTION_PARAMETERS", "Branches", "skeletonize_files",
 ]
 
 # The defaults, read from the library itself (the CLI's and the MeshLab dialog's too).
@@ -242,3 +243,6 @@ Skeleton.branch_of = _branch_of
 Skeleton.to_networkx = _to_networkx
 Skeleton.to_open3d = _to_open3d
 Skeleton.__repr__ = _repr
+
+
+from ._batch import skeletonize_files  # noqa: E402 (it calls skeletonize, defined above)
