@@ -115,3 +115,18 @@ def test_the_dask_example_runs_the_batch_and_lists_the_failure(scans, tmp_path):
     assert run.returncode == 1, run.stdout + run.stderr
     assert "5 of 6 inputs done or skipped; 1 failed" in run.stdout and "broken.xyz" in run.stdout, run.stdout
     assert len(list((tmp_path / "out").glob("*_skeleton.ply"))) == 5
+
+
+def test_an_input_whose_worker_died_is_a_failed_row():
+    # What a pool whose process was killed (or a cluster that lost its worker) hands back.
+    import concurrent.futures
+    import concurrent.futures.process
+    import functools
+    from pcskeleton import _batch
+    future = concurrent.futures.Future()
+    future.set_exception(concurrent.futures.process.BrokenProcessPool("a process was terminated abruptly"))
+    task = functools.partial(_batch._skeletonize_one, "scans/a.ply", "out/a_skeleton.ply", {}, False)
+    rows = {}
+    _batch._collect({future: (3, task)}, [future], rows.__setitem__)
+    assert rows[3]["status"] == "failed" and rows[3]["input"] == "scans/a.ply"
+    assert "BrokenProcessPool" in rows[3]["message"] and "terminated abruptly" in rows[3]["message"]
