@@ -3,7 +3,8 @@
 // radius profile of a tapered tube, how many of a Y's points land in the branch of the
 // limb they were sampled from, and a small tree of three orders (the robustness suite's):
 // its branch count, total length, volume and orders. The tree's truth is measureBranches
-// on its exact curve skeleton (the tube's centre curve), each tip a radius longer (the cap).
+// on its exact curve skeleton (the tube's centre curve), each tip a radius longer (the cap),
+// and for the volume, that of the shape itself (its capsules' union).
 //
 // A limb's true length runs from its junction (or the shape's end) to the end of the shape,
 // cap included: what a ruler laid along the object measures. Each true limb is matched to
@@ -148,6 +149,30 @@ void measureTaper(double noise, std::size_t n) {
                 noise > 0 ? "1%" : "clean", total > 0 ? 100 * within / total : 0.0, 100 * (measured - volume) / volume);
 }
 
+// The volume of the union of capsules of radius r around the segments: the tube's shape,
+// caps included and overlaps at junctions once. Monte Carlo over its bounding box, 2M
+// samples: within 0.3% (one standard error about 0.1%).
+double tubeVolume(const shapes::Polyline& curve, double r) {
+    Eigen::AlignedBox3d box;
+    for (const auto& segment : curve) box.extend(segment.a), box.extend(segment.b);
+    box.min().array() -= r;
+    box.max().array() += r;
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> unit(0, 1);
+    const std::size_t samples = 2000000;
+    std::size_t inside = 0;
+    for (std::size_t i = 0; i < samples; ++i) {
+        const Point p = box.min() + Point(unit(random), unit(random), unit(random)).cwiseProduct(box.sizes());
+        for (const auto& segment : curve) {
+            if (shapes::distanceToSegment(p, segment.a, segment.b) <= r) {
+                ++inside;
+                break;
+            }
+        }
+    }
+    return box.volume() * double(inside) / double(samples);
+}
+
 void measureTree(double noise, std::size_t n) {
     const double radius = 0.06;
     // The suite's tree made lopsided (the right side lower and shorter), so that the main
@@ -163,13 +188,13 @@ void measureTree(double noise, std::size_t n) {
     if (noise > 0) points = shapes::withNoise(points, noise);
     const SkeletonResult result = computeCurveSkeleton(points);
     const SkeletonBranches b = measureBranches(result.skeleton);
-    double trueLength = 0, length = 0, trueVolume = 0, volume = 0;
+    double trueLength = 0, length = 0, volume = 0;
+    const double trueVolume = tubeVolume(tree, radius);
     int ordersRight = 0, ordersJudged = 0;
     const std::vector<int> degree = nodeDegrees(exact.nodeCount(), exact.edges);
     for (const Branch& branch : truth.branches) {
         // Tips and the root end a radius past the curve (the cap).
         trueLength += branch.length + radius * (degree[std::size_t(branch.nodes.back())] == 1);
-        trueVolume += branch.volume;
         if (branch.length < 3 * result.quality.nodeSpacing) continue;
         // The measured branch holding the node nearest to the middle of the true one.
         const Point middle = (exact.nodes[std::size_t(branch.nodes.front())] + exact.nodes[std::size_t(branch.nodes.back())]) / 2;
@@ -189,6 +214,34 @@ void measureTree(double noise, std::size_t n) {
                 ordersJudged);
 }
 
+// Curved tubes, held out when the branches' course (fork points, smoothing) was chosen on the
+// Y and the star: a helix of two turns (radius 0.5, rising 1) and a trefoil knot (a loop),
+// tube radius 0.06, 400 segments each. The measured total length against the curve's (and
+// for the helix its two caps).
+void measureCurve(bool knot, double noise, std::size_t n) {
+    shapes::Polyline curve;
+    const auto at = [knot](double s) {
+        const double u = 2 * M_PI * s;
+        return knot ? Point(std::sin(u) + 2 * std::sin(2 * u), std::cos(u) - 2 * std::cos(2 * u), -std::sin(3 * u)) * 0.4
+                    : Point(0.5 * std::cos(2 * u), 0.5 * std::sin(2 * u), s);
+    };
+    double trueLength = knot ? 0.0 : 2 * kRadius;
+    for (int i = 0; i < 400; ++i) {
+        curve.push_back({at(i / 400.0), at((i + 1) / 400.0)});
+        trueLength += (curve.back().b - curve.back().a).norm();
+    }
+    PointList points = shapes::tube(curve, kRadius, n);
+    if (noise > 0) points = shapes::withNoise(points, noise);
+    const SkeletonResult result = computeCurveSkeleton(points);
+    const SkeletonBranches b = measureBranches(result.skeleton);
+    double length = 0, bones = 0;
+    for (const Branch& branch : b.branches) length += branch.length;
+    for (const Edge& e : result.skeleton.edges) bones += (result.skeleton.nodes[e[0]] - result.skeleton.nodes[e[1]]).norm();
+    std::printf("%-7s %-6s total length %+.1f%% (the bones as they lie: %+.1f%%), %zu branch(es)\n", knot ? "trefoil" : "helix",
+                noise > 0 ? "1%" : "clean", 100 * (length - trueLength) / trueLength, 100 * (bones - trueLength) / trueLength,
+                b.branches.size());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -203,5 +256,8 @@ int main(int argc, char** argv) {
     }
     for (double noise : {0.0, 0.01}) measureTaper(noise, n);
     for (double noise : {0.0, 0.01}) measureTree(noise, n);
+    for (bool knot : {false, true}) {
+        for (double noise : {0.0, 0.01}) measureCurve(knot, noise, n);
+    }
     return 0;
 }

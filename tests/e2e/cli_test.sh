@@ -387,7 +387,7 @@ if [ "$SANITIZED" = 0 ]; then
   [ ! -e left.ply ] && [ ! -e left.off ] || fail "a failed run left $(ls left.* | tr '\n' ' ')"
 fi
 # The branch table and each point's branch. The knot is one loop: one branch that closes it,
-# as long as all its bones. The elephant is a tree: a branch per chain between tips and
+# as long as all its bones less their zigzag (the course is smoothed across: a few percent). The elephant is a tree: a branch per chain between tips and
 # junctions, and every point of the correspondence in one of them.
 "$PCSKELETON" $M/knot.off -o knot_measured.ply --branches knot_branches.json --quiet
 /usr/bin/python3 - knot_branches.json knot_measured.ply <<'PY' || fail "the knot's branch table"
@@ -400,7 +400,7 @@ n = int(head.split("element vertex ")[1].split()[0])
 nodes = [list(map(float, l.split()[:3])) for l in lines[:n]]
 edges = [list(map(int, l.split()[:2])) for l in lines[n:] if l.strip()]
 total = sum(math.dist(nodes[a], nodes[b]) for a, b in edges)
-assert abs(rows[0]["length"] - total) < 1e-9 * total, (rows[0]["length"], total)
+assert 0.95 * total < rows[0]["length"] <= total, (rows[0]["length"], total)
 PY
 "$PCSKELETON" $M/elephant.off -o elephant_measured.ply --branches elephant.csv --point-branches elephant_points.csv \
   2>elephant_branches.log

@@ -2,6 +2,7 @@
 
 #include "pcskeleton/core/errors.h"
 #include "pcskeleton/internal/disjoint_sets.h"
+#include "pcskeleton/internal/local_plane.h"
 #include "pcskeleton/skeleton/skeleton_structure.h"
 
 #include <algorithm>
@@ -37,49 +38,180 @@ double angleDegrees(const Point& a, const Point& b) {
     return std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0)) * 180.0 / M_PI;
 }
 
-// The length of each bone of a path: bones[i] joins path[i - 1] and path[i] (bones[0] = 0).
-std::vector<double> boneLengths(const SkeletonGraph& skeleton, const std::vector<int>& path) {
-    std::vector<double> bones(path.size(), 0.0);
-    for (std::size_t i = 1; i < path.size(); ++i) bones[i] = (skeleton.nodes[path[i]] - skeleton.nodes[path[i - 1]]).norm();
+// Junctions joined by a chain of bones whose fork points lie closer than their two radii
+// together (their spheres overlap) are one junction, their arms leaving one knot:
+// contraction splits a junction of four or more arms into two or three such. `group`
+// gives each node of a group (its junctions and the nodes of its inner bones) the group's
+// number, -1 to every other node.
+struct JunctionGroups {
+    std::vector<int> group;             // per node
+    std::vector<std::vector<int>> junctions;  // per group
+
+    bool isInnerBone(const std::vector<int>& chain) const {
+        const int a = group[std::size_t(chain.front())], b = group[std::size_t(chain.back())];
+        return a >= 0 && a == b && chain.front() != chain.back() && group[std::size_t(chain[chain.size() / 2])] == a;
+    }
+};
+
+// Where a junction's arms meet: the point nearest (least squares) to the lines along its
+// arms (for a group of junctions, the arms of all of them). Contraction leaves a junction's
+// node in the middle of the arms' overlap, beyond the fork, so that measured from it the
+// stem is too long and the arms too short (docs/benchmarks.md#branch-measures). Each arm's line is fitted
+// to its nodes from one to four junction radii away (nearer ones lean towards the
+// junction). The junction's node itself when fewer than two arms give a line, or when that
+// point lies farther from every junction of the group than its radius (it would leave
+// their tubes).
+Point forkPoint(const SkeletonGraph& skeleton, const std::vector<std::vector<int>>& neighbours,
+                const JunctionGroups& groups, const std::vector<int>& junctions) {
+    const Point& node = skeleton.nodes[std::size_t(junctions.front())];
+    constexpr double kPull = 1e-3;  // towards the node, so that parallel arms still give one point
+    Eigen::Matrix3d normal = kPull * Eigen::Matrix3d::Identity();
+    Point right = kPull * node;
+    int lines = 0;
+    for (int junction : junctions) {
+        const double radius = skeleton.radii[std::size_t(junction)];
+        for (int next : neighbours[std::size_t(junction)]) {
+            const std::vector<int> arm = walkChain(neighbours, junction, next);
+            if (groups.isInnerBone(arm)) continue;
+            std::vector<int> far;
+            double along = 0.0;
+            for (std::size_t i = 1; i < arm.size() && along <= 4.0 * radius; ++i) {
+                along += (skeleton.nodes[std::size_t(arm[i])] - skeleton.nodes[std::size_t(arm[i - 1])]).norm();
+                if (along >= radius && along <= 4.0 * radius) far.push_back(arm[i]);
+            }
+            if (far.size() < 2) continue;
+            const LocalPlane fit = fitLocalPlane(skeleton.nodes, far);
+            const Point direction = fit.axes.col(2);
+            const Eigen::Matrix3d across = Eigen::Matrix3d::Identity() - direction * direction.transpose();
+            normal += across;
+            right += across * fit.centroid;
+            ++lines;
+        }
+    }
+    if (lines < 2) return node;
+    const Point fork = normal.ldlt().solve(right);
+    if (!fork.allFinite()) return node;
+    for (int junction : junctions) {
+        if ((fork - skeleton.nodes[std::size_t(junction)]).norm() <= skeleton.radii[std::size_t(junction)]) return fork;
+    }
+    return node;
+}
+
+JunctionGroups groupJunctions(const SkeletonGraph& skeleton, const std::vector<std::vector<int>>& neighbours) {
+    const std::size_t count = skeleton.nodeCount();
+    // Each junction's own fork point: the nodes of a split junction scatter more than the
+    // fork points of its parts.
+    JunctionGroups none;
+    none.group.assign(count, -1);
+    std::vector<Point> fork(count);
+    for (std::size_t a = 0; a < count; ++a) {
+        if (neighbours[a].size() >= 3) fork[a] = forkPoint(skeleton, neighbours, none, {int(a)});
+    }
+    DisjointSets knots(count);
+    std::vector<bool> inKnot(count, false);
+    for (std::size_t a = 0; a < count; ++a) {
+        if (neighbours[a].size() < 3) continue;
+        inKnot[a] = true;
+        for (int next : neighbours[a]) {
+            const std::vector<int> chain = walkChain(neighbours, int(a), next);
+            const std::size_t b = std::size_t(chain.back());
+            if (b == a || neighbours[b].size() < 3) continue;
+            if ((fork[a] - fork[b]).norm() >= skeleton.radii[a] + skeleton.radii[b]) continue;
+            for (int n : chain) knots.unite(int(a), n), inKnot[std::size_t(n)] = true;
+        }
+    }
+    JunctionGroups groups;
+    groups.group.assign(count, -1);
+    std::vector<int> numberOf(count, -1);
+    for (std::size_t n = 0; n < count; ++n) {
+        if (!inKnot[n]) continue;
+        int& number = numberOf[std::size_t(knots.find(int(n)))];
+        if (number < 0) number = int(groups.junctions.size()), groups.junctions.emplace_back();
+        groups.group[n] = number;
+        if (neighbours[n].size() >= 3) groups.junctions[std::size_t(number)].push_back(int(n));
+    }
+    return groups;
+}
+
+// The course a branch is measured along: its nodes, a junction at either end at its fork
+// point, the others smoothed. The nodes scatter a little across the bone, and a zigzag is
+// longer than the bone, the more so with noise. Taubin's smoothing
+// (a step in, then a slightly larger step out) takes the zigzag out and leaves bends as
+// they are: a wave of k node spacings keeps (1 - 0.5 c)(1 + 0.53 c) of itself per round,
+// c = 1 - cos(2 pi / k): nothing of a zigzag (k = 2) stays, and nearly all of a wave many
+// spacings long.
+std::vector<Point> courseOf(const std::vector<Point>& forks, const std::vector<int>& nodes) {
+    std::vector<Point> course;
+    for (int n : nodes) course.push_back(forks[std::size_t(n)]);
+    for (int round = 0; round < 2; ++round) {
+        for (double step : {0.5, -0.53}) {
+            std::vector<Point> moved = course;
+            for (std::size_t i = 1; i + 1 < course.size(); ++i) {
+                moved[i] = course[i] + step * (0.5 * (course[i - 1] + course[i + 1]) - course[i]);
+            }
+            course = std::move(moved);
+        }
+    }
+    return course;
+}
+
+// The length of each bone of a course: bones[i] joins course[i - 1] and course[i] (bones[0] = 0).
+std::vector<double> boneLengths(const std::vector<Point>& course) {
+    std::vector<double> bones(course.size(), 0.0);
+    for (std::size_t i = 1; i < course.size(); ++i) bones[i] = (course[i] - course[i - 1]).norm();
     return bones;
 }
 
-void measureShape(const SkeletonGraph& skeleton, const std::vector<double>& bones, Branch& branch) {
+// The radius of a branch at each of its nodes. A junction's node holds points of all its
+// arms, and their mean distance measures the knot's spread, not a tube: at a junction (of a knot) the branch has the radius of its nearest node
+// outside it.
+std::vector<double> branchRadii(const SkeletonGraph& skeleton, const JunctionGroups& groups, const std::vector<int>& path) {
+    std::vector<double> radii;
+    for (int n : path) radii.push_back(skeleton.radii[std::size_t(n)]);
+    const auto outside = [&](int n) { return groups.group[std::size_t(n)] < 0; };
+    const auto first = std::find_if(path.begin(), path.end(), outside);
+    if (first == path.end()) return radii;
+    const auto last = std::find_if(path.rbegin(), path.rend(), outside);
+    for (std::size_t i = 0; i < path.size(); ++i) {
+        if (outside(path[i])) continue;
+        const bool nearerTheBase = i < path.size() / 2;
+        radii[i] = skeleton.radii[std::size_t(nearerTheBase ? *first : *last)];
+    }
+    return radii;
+}
+
+void measureShape(const std::vector<double>& radii, const std::vector<Point>& course, const std::vector<double>& bones,
+                  Branch& branch) {
     const std::vector<int>& path = branch.nodes;
-    const auto radius = [&](int n) { return skeleton.radii[std::size_t(n)]; };
     double radiusLength = 0.0;
     for (std::size_t i = 1; i < path.size(); ++i) {
         const double h = bones[i];
-        const double a = radius(path[i - 1]), b = radius(path[i]);
+        const double a = radii[i - 1], b = radii[i];
         branch.length += h;
         radiusLength += h * (a + b) / 2.0;
         branch.volume += M_PI * h / 3.0 * (a * a + a * b + b * b);
     }
-    branch.chord = (skeleton.nodes[path.back()] - skeleton.nodes[path.front()]).norm();
-    branch.baseRadius = radius(path.front());
-    branch.tipRadius = radius(path.back());
+    branch.chord = (course.back() - course.front()).norm();
+    branch.baseRadius = radii.front();
+    branch.tipRadius = radii.back();
     branch.meanRadius = branch.length > 0.0 ? radiusLength / branch.length : branch.baseRadius;
 }
 
-// The node halfway along a branch (by length).
-int halfwayNode(const SkeletonGraph& skeleton, const Branch& branch) {
+// The place halfway along a course (by length).
+std::size_t halfway(const std::vector<Point>& course, double length) {
     double along = 0.0;
-    for (std::size_t i = 1; i < branch.nodes.size(); ++i) {
-        along += (skeleton.nodes[branch.nodes[i]] - skeleton.nodes[branch.nodes[i - 1]]).norm();
-        if (along >= branch.length / 2.0) return branch.nodes[i];
+    for (std::size_t i = 1; i < course.size(); ++i) {
+        along += (course[i] - course[i - 1]).norm();
+        if (along >= length / 2.0) return i;
     }
-    return branch.nodes.back();
+    return course.size() - 1;
 }
 
 // The direction a branch leaves its base, and the one it has at its tip, each over half
 // its length: the nodes next to a junction lean towards it, so a bone or two there tells
 // little.
-Point startDirection(const SkeletonGraph& skeleton, const Branch& branch) {
-    return skeleton.nodes[halfwayNode(skeleton, branch)] - skeleton.nodes[branch.nodes.front()];
-}
-Point endDirection(const SkeletonGraph& skeleton, const Branch& branch) {
-    return skeleton.nodes[branch.nodes.back()] - skeleton.nodes[halfwayNode(skeleton, branch)];
-}
+Point startDirection(const std::vector<Point>& course, double length) { return course[halfway(course, length)] - course.front(); }
+Point endDirection(const std::vector<Point>& course, double length) { return course.back() - course[halfway(course, length)]; }
 
 // At each junction the main axis goes on into the child with the longest continuation (the
 // lower-numbered among equals).
@@ -116,6 +248,14 @@ SkeletonBranches measureBranches(const SkeletonGraph& skeleton, const BranchOpti
     if (skeleton.radii.size() != count) throw CallerError("measureBranches: one radius per node expected");
 
     const std::vector<std::vector<int>> neighbours = adjacencyLists(count, skeleton.edges);
+    const JunctionGroups groups = groupJunctions(skeleton, neighbours);
+    std::vector<Point> forks = skeleton.nodes;  // each node's place; a junction group's at its fork point
+    std::vector<Point> groupFork;
+    for (const std::vector<int>& junctions : groups.junctions) groupFork.push_back(forkPoint(skeleton, neighbours, groups, junctions));
+    for (std::size_t n = 0; n < count; ++n) {
+        if (groups.group[n] >= 0) forks[n] = groupFork[std::size_t(groups.group[n])];
+    }
+    std::vector<std::vector<Point>> courses;  // per branch
     SkeletonBranches result;
     std::vector<Branch>& branches = result.branches;
     result.nodeBranch.assign(count, -1);
@@ -139,9 +279,22 @@ SkeletonBranches measureBranches(const SkeletonGraph& skeleton, const BranchOpti
                 branch.parent = parent;
                 branch.nodes = walkChain(neighbours, base, next);
                 for (std::size_t i = 2; i < branch.nodes.size(); ++i) walk(branch.nodes[i - 1], branch.nodes[i]);
+                if (groups.isInnerBone(branch.nodes) && !reached[branch.nodes.back()]) {
+                    // Inside one knot of junctions: no branch; the arms of its far junction
+                    // leave the knot as those of this one do, from the same parent.
+                    for (std::size_t i = 1; i < branch.nodes.size(); ++i) {
+                        const int n = branch.nodes[i];
+                        reached[n] = true;
+                        if (parent >= 0 && result.nodeBranch[n] < 0) result.nodeBranch[n] = parent, nodePosition[n] = branches[parent].length;
+                    }
+                    junctions.push_front({branch.nodes.back(), parent});
+                    continue;
+                }
                 branch.closesLoop = reached[branch.nodes.back()];
-                const std::vector<double> bones = boneLengths(skeleton, branch.nodes);
-                measureShape(skeleton, bones, branch);
+                courses.push_back(courseOf(forks, branch.nodes));
+                const std::vector<Point>& course = courses.back();
+                const std::vector<double> bones = boneLengths(course);
+                measureShape(branchRadii(skeleton, groups, branch.nodes), course, bones, branch);
                 const int index = int(branches.size());
                 double along = 0.0;
                 for (std::size_t i = 1; i < branch.nodes.size(); ++i) {
@@ -154,8 +307,8 @@ SkeletonBranches measureBranches(const SkeletonGraph& skeleton, const BranchOpti
                     junctions.push_back({branch.nodes.back(), index});
                 }
                 branch.angleToParent = parent < 0 ? std::numeric_limits<double>::quiet_NaN()
-                                                  : angleDegrees(endDirection(skeleton, branches[parent]),
-                                                                 startDirection(skeleton, branch));
+                                                  : angleDegrees(endDirection(courses[std::size_t(parent)], branches[parent].length),
+                                                                 startDirection(course, branch.length));
                 branches.push_back(std::move(branch));
             }
         }

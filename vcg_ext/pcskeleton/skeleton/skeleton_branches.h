@@ -10,6 +10,13 @@
 // grows from it, and so on; at each junction the main axis goes on into the child with the
 // longest continuation (the longest path of branches from there to a tip), the others
 // start a new order.
+//
+// Measured as the object lies, not as the nodes do: a branch runs from the fork point of
+// its base junction (where the lines along the junction's arms meet) to that of its tip's
+// or to its tip, along its nodes smoothed across (the zigzag of scattered nodes taken out,
+// bends kept). Junctions whose spheres overlap (fork points closer than their two radii)
+// are one knot, their arms leaving it together: contraction splits a junction of four or
+// more arms in two. At a junction a branch has the radius of its nearest node outside it.
 #pragma once
 
 #include "pcskeleton/skeleton/skeleton_graph.h"
@@ -23,7 +30,7 @@ struct Branch {
     int parent = -1;         // the branch it grows from; -1 for a branch from its part's root
     int order = 1;
     bool closesLoop = false;  // it ends where the skeleton was reached already: it closes a loop
-    double length = 0.0;      // along the bones, input units
+    double length = 0.0;      // along the bones (see above), input units
     double chord = 0.0;       // from base to tip in a straight line
     double baseRadius = 0.0, tipRadius = 0.0;
     double meanRadius = 0.0;  // along its length
