@@ -148,6 +148,13 @@ MeshModel* addSkeletonLayer(MeshDocument& md, const MeshModel& source, const Lay
     return layer;
 }
 
+// MeshLab draws a new layer of edges as thin lines, of a fixed dark grey unless its vertices
+// have colours, and its vertices as points in their colour; a filter cannot choose the
+// lines' width (docs/meshlab.md says where a user does). Coloured vertices make the nodes
+// stand out over a scan and tint the bones. Green: neither the grey or white of most scans,
+// nor the yellow and red of the Edit Skeleton tool's nodes.
+const vcg::Color4b kSkeletonColour(20, 220, 60, 255);
+
 void writeSkeletonLayer(MeshModel& layer, const SkeletonGraph& skeleton) {
     CMeshO& out = layer.cm;
     // Stale per-vertex values must not survive into the new vertices.
@@ -156,12 +163,13 @@ void writeSkeletonLayer(MeshModel& layer, const SkeletonGraph& skeleton) {
     auto oldInferred = Allocator::FindPerEdgeAttribute<unsigned char>(out, kInferredAttribute);
     if (Allocator::IsValidHandle(out, oldInferred)) Allocator::DeletePerEdgeAttribute(out, oldInferred);
     out.Clear();
-    layer.updateDataMask(MeshModel::MM_VERTQUALITY);
+    layer.updateDataMask(MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR);
     auto vertex = Allocator::AddVertices(out, skeleton.nodeCount());
     auto radius = Allocator::GetPerVertexAttribute<float>(out, kRadiusAttribute);
     for (std::size_t n = 0; n < skeleton.nodeCount(); ++n, ++vertex) {
         vertex->P() = toMeshLab(skeleton.nodes[n]);
         vertex->Q() = radius[vertex] = float(skeleton.radii[n]);
+        vertex->C() = kSkeletonColour;
     }
     for (const Edge& e : skeleton.edges) Allocator::AddEdge(out, e[0], e[1]);
     if (!skeleton.inferred.empty()) {
@@ -173,6 +181,9 @@ void writeSkeletonLayer(MeshModel& layer, const SkeletonGraph& skeleton) {
         Allocator::GetPerMeshAttribute<std::vector<int>>(out, kCorrespondenceAttribute)() = skeleton.pointNode;
     }
     updateBoxAndNormals(layer);
+    // Nodes have no surface, hence no normal (MeshLab leaves them zero, and lit points with
+    // a zero normal come out nearly black): facing MeshLab's first view, they are lit there.
+    for (CVertexO& v : out.vert) v.N() = CMeshO::CoordType(0, 0, 1);
 }
 
 MeshModel* addLabelledPointLayer(MeshDocument& md, const LayerPoints& input, const std::vector<int>& labels,

@@ -62,6 +62,12 @@ TEST_F(SkeletonFilterTest, TorusGivesAOneCycleSkeletonLayerAndLeavesTheInputAlon
     EXPECT_EQ(skeleton->cm.fn, 0);
     EXPECT_TRUE(skeleton->hasDataMask(MeshModel::MM_VERTQUALITY));
     for (const auto& v : skeleton->cm.vert) EXPECT_NEAR(v.cQ(), 0.25, 0.05) << "radius of a node";
+    // Drawn to stand out: coloured nodes (MeshLab tints the bones with them), lit in its first view.
+    ASSERT_TRUE(skeleton->hasDataMask(MeshModel::MM_VERTCOLOR));
+    for (const auto& v : skeleton->cm.vert) {
+        EXPECT_GT(int(v.cC()[1]), 2 * int(v.cC()[0])) << "a green node";
+        EXPECT_FLOAT_EQ(v.cN()[2], 1.0f);
+    }
 
     // Correspondence: per input vertex in the skeleton layer, per point in the segments layer.
     auto correspondence =
