@@ -95,6 +95,9 @@ bool EditSkeletonTool::start(MeshModel& m, GLArea* area, MLSceneGLSharedDataCont
         panel_->showMessage(QString("%1 node(s) had no radius and took their neighbours' (saved with the first "
                                     "edit).").arg(filledRadii), false);
     }
+    // Moves without a button pressed, so that the panel can name the branch under the cursor.
+    hadMouseTracking_ = area->hasMouseTracking();
+    area->setMouseTracking(true);
     refreshPanel();
     area->setFocus();
     return true;
@@ -102,6 +105,8 @@ bool EditSkeletonTool::start(MeshModel& m, GLArea* area, MLSceneGLSharedDataCont
 
 void EditSkeletonTool::end() {
     shortcuts_.giveBack();
+    if (area_) area_->setMouseTracking(hadMouseTracking_);
+    hoveredNode_ = -1;
     if (panel_) panel_->deleteLater();
     panel_ = nullptr;
     editor_.reset();
@@ -249,6 +254,7 @@ void EditSkeletonTool::reconstructSurface() {
 }
 
 void EditSkeletonTool::storeInLayer() {
+    hoveredNode_ = -1;  // nodes may have been renumbered
     meshlab::writeSkeletonLayer(*layer_, editor_->skeleton());
     meshlab::selectNodes(*layer_, selection());
     layer_->setMeshModified(true);  // MeshLab offers to save it on closing
@@ -272,7 +278,12 @@ void EditSkeletonTool::refreshPanel() {
     state.counts = QString::fromStdString(describe(analyseTopology(g)));
     const std::vector<int> nodes = selection();
     state.selected = static_cast<int>(nodes.size());
-    if (!nodes.empty()) state.branches = QString::fromStdString(describeBranchesOf(measureBranches(g), nodes));
+    const bool hovering = hoveredNode_ >= 0 && hoveredNode_ < int(g.nodeCount());
+    if (!nodes.empty() || hovering) {
+        const SkeletonBranches branches = measureBranches(g);
+        if (!nodes.empty()) state.branches = QString::fromStdString(describeBranchesOf(branches, nodes));
+        if (hovering) state.hovered = QString::fromStdString(describeBranchesOf(branches, {hoveredNode_}));
+    }
     state.selectedAreConnected =
         nodes.size() == 2 && hasEdge(g.edges, nodes[0], nodes[1]);
     state.canUndo = editor_->canUndo();
@@ -337,8 +348,17 @@ void EditSkeletonTool::mouseMoveEvent(QMouseEvent* event, MeshModel&, GLArea* ar
             dragOffset_ = screenParallelOffset(view_, centroid, toGlWindow(pressedAt_), toGlWindow(mouseAt_));
             break;
         }
-        case Gesture::RubberBand:
-        case Gesture::None: break;
+        case Gesture::None: {
+            const int node = view_.valid ? nodeAt(view_, editor_->graph().nodes, toGlWindow(mouseAt_),
+                                                   kPickPixels * area->devicePixelRatio())
+                                         : -1;
+            if (node != hoveredNode_) {
+                hoveredNode_ = node;
+                refreshPanel();
+            }
+            break;
+        }
+        case Gesture::RubberBand: break;
     }
 }
 

@@ -90,6 +90,8 @@ private:
     Gesture gesture_ = Gesture::None;
     QPoint pressedAt_, mouseAt_;
     int pressedNode_ = -1;
+    int hoveredNode_ = -1;  // the node under the cursor (no button pressed), or -1
+    bool hadMouseTracking_ = false;  // the view's, given back at the end
     Point dragOffset_ = Point::Zero();
 };
 

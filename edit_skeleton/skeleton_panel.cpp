@@ -55,6 +55,9 @@ SkeletonPanel::SkeletonPanel(QWidget* parent) : QDockWidget("Edit Skeleton", par
     branches_ = new QLabel(body);
     branches_->setWordWrap(true);
     layout->addWidget(branches_);
+    hovered_ = new QLabel(body);
+    hovered_->setWordWrap(true);
+    layout->addWidget(hovered_);
 
     auto* help = new QLabel(
         "<small>Click a node to select it, Shift+click to add or remove one, drag on empty space to select "
@@ -91,6 +94,10 @@ void SkeletonPanel::showState(const State& state) {
     counts_->setText(state.counts);
     selection_->setText(QString("%1 selected").arg(state.selected));
     branches_->setText(state.branches.isEmpty() ? QString() : "The selection is on " + state.branches + ".");
+    hovered_->setText(state.hovered.isEmpty() ? QString() : "Under the cursor: " + state.hovered + ".");
+    // Shown only with a text, so that the help below comes back to its place when they empty.
+    branches_->setVisible(!state.branches.isEmpty());
+    hovered_->setVisible(!state.hovered.isEmpty());
     delete_->setEnabled(state.selected > 0);
     connect_->setEnabled(state.selected == 2 && !state.selectedAreConnected);
     disconnect_->setEnabled(state.selectedAreConnected);

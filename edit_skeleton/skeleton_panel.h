@@ -22,6 +22,7 @@ public:
         QString counts;        // "12 nodes, 11 edges, ..."
         int selected = 0;      // selected nodes
         QString branches;      // the branches the selection lies on ("branch 3: order 2, ...")
+        QString hovered;       // the branch of the node under the cursor, or empty
         bool selectedAreConnected = false;  // exactly two selected, joined by a bone
         bool canUndo = false, canRedo = false;
         QString undoText, redoText;
@@ -49,6 +50,7 @@ private:
     QLabel* counts_;
     QLabel* selection_;
     QLabel* message_;
+    QLabel* hovered_ = nullptr;
     QLabel* branches_;  // the branches the selection lies on
     QPushButton *delete_, *connect_, *disconnect_, *merge_, *split_, *radiusUp_, *radiusDown_, *undo_, *redo_, *reconstruct_;
     QCheckBox* radiusField_;

@@ -52,6 +52,25 @@ shot edit-menu
 if [[ "$VERSION" == 2020.* ]]; then click 128 434 2; else xdotool key Up Return; sleep 2; fi
 expect_nodes 12 0 tool-started
 
+# Hovering: the panel names the branch of the node under the cursor (below its buttons), and
+# no longer once the cursor leaves it for the empty middle of the ring.
+NOHOVER="$SHOT"
+panel_text_changed() {  # yes|no: the panel's text below the buttons differs from before the hover
+  $PY - "$NOHOVER" "$SHOT" "$1" <<'PY'
+import sys
+from PIL import Image, ImageChops
+before, now = (Image.open(p).convert("RGB").crop((865, 340, 1280, 600)) for p in sys.argv[1:3])
+changed = ImageChops.difference(before, now).getbbox() is not None
+sys.exit(0 if changed == (sys.argv[3] == "yes") else 1)
+PY
+}
+read -r x y <<<"$(node_at 0)"
+xdotool mousemove "$x" "$y"
+wait_screen 20 hovering "the panel does not name the branch under the cursor" panel_text_changed yes
+read -r cx cy < "$WORK/ring_centre.txt"
+xdotool mousemove "${cx%.*}" "${cy%.*}"
+wait_screen 20 hover-left "the panel still names a branch with no node under the cursor" panel_text_changed no
+
 read -r x y <<<"$(node_at 0)"
 click "$x" "$y"
 expect_nodes 11 1 node-selected
