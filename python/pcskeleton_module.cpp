@@ -394,6 +394,7 @@ py::dict branchesDict(const SkeletonBranches& b) {
     const std::vector<Branch>& t = b.branches;
     py::dict d;
     d["parent"] = columnOf<int>(t, [](const Branch& x) { return x.parent; });
+    d["part"] = columnOf<int>(t, [](const Branch& x) { return x.part; });
     d["order"] = columnOf<int>(t, [](const Branch& x) { return x.order; });
     d["base_node"] = columnOf<int>(t, [](const Branch& x) { return x.nodes.front(); });
     d["tip_node"] = columnOf<int>(t, [](const Branch& x) { return x.nodes.back(); });

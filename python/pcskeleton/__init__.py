@@ -179,13 +179,14 @@ class Branches:
     (-1 from the root), ``order``, ``base_node``, ``tip_node``, ``length`` (along the
     bones), ``chord``, ``base_radius``, ``tip_radius``, ``mean_radius``, ``volume`` (the
     bones as truncated cones), ``angle_to_parent`` (degrees, 0 straight on; NaN from the
-    root), ``points``, ``closes_loop``; ``nodes``, a list of each branch's nodes from base
+    root), ``points``, ``closes_loop``, ``part`` (the skeleton's connected part, from 0);
+    ``nodes``, a list of each branch's nodes from base
     to tip. Per input point, ``point_branch`` (-1 for none) and ``point_position`` (0 at
     the branch's base, 1 at its tip); per skeleton node, ``node_branch``.
     """
 
     COLUMNS = ("parent", "order", "base_node", "tip_node", "length", "chord", "base_radius", "tip_radius",
-               "mean_radius", "volume", "angle_to_parent", "points", "closes_loop")
+               "mean_radius", "volume", "angle_to_parent", "points", "closes_loop", "part")
 
     def __init__(self, table):
         for name, value in table.items():
@@ -199,7 +200,20 @@ class Branches:
         for order in self.order:
             orders[int(order)] = orders.get(int(order), 0) + 1
         by_order = ", ".join(f"order {o}: {n}" for o, n in sorted(orders.items()))
-        return f"<pcskeleton.Branches: {len(self)} ({by_order}), {float(sum(self.length)):.6g} long in all>"
+        return (f"<pcskeleton.Branches: {len(self)} ({by_order}), {float(sum(self.length)):.6g} long in all, "
+                f"volume {float(sum(self.volume)):.6g}>")
+
+    def per_part(self):
+        """Per connected part of the skeleton: {part: {"branches", "length", "volume",
+        "orders": {order: count}}}, the totals of its branches."""
+        parts = {}
+        for part, order, length, volume in zip(self.part, self.order, self.length, self.volume):
+            totals = parts.setdefault(int(part), {"branches": 0, "length": 0.0, "volume": 0.0, "orders": {}})
+            totals["branches"] += 1
+            totals["length"] += float(length)
+            totals["volume"] += float(volume)
+            totals["orders"][int(order)] = totals["orders"].get(int(order), 0) + 1
+        return parts
 
     def to_pandas(self):
         """A pandas.DataFrame, one row per branch (index: the branch number)."""

@@ -373,6 +373,19 @@ def test_branches_refuse_a_zero_up_axis_or_a_root_that_is_no_node():
         skeleton.branch_of(-1)
 
 
+def test_branches_know_their_part_and_sum_up_per_part():
+    # Two separate sticks: one branch each, in parts 0 and 1.
+    nodes = [[0, 0, 0], [0, 0, 1], [5, 0, 0], [5, 0, 2]]
+    skeleton = pcskeleton.Skeleton(nodes, [[0, 1], [2, 3]], radii=[0.1, 0.1, 0.2, 0.2])
+    branches = skeleton.branches
+    assert list(branches.part) == [0, 1]
+    parts = branches.per_part()
+    assert parts[0]["branches"] == 1 and parts[0]["length"] == pytest.approx(1.0)
+    assert parts[1]["length"] == pytest.approx(2.0) and parts[1]["volume"] == pytest.approx(np.pi * 0.04 * 2)
+    assert parts[1]["orders"] == {1: 1}
+    assert "volume 0.282743" in repr(branches)
+
+
 def test_branches_as_a_data_frame():
     pytest.importorskip("pandas")
     frame = _fork()[0].branches.to_pandas()

@@ -42,11 +42,11 @@ TEST(BranchIo, TheCsvTableHasAHeaderAndOneRowPerBranch) {
     const std::string text = contents(path);
     EXPECT_EQ(text.substr(0, text.find('\n')),
               "branch,parent,order,base_node,tip_node,nodes,length,chord,base_radius,tip_radius,mean_radius,volume,"
-              "angle_to_parent,points,closes_loop");
+              "angle_to_parent,points,closes_loop,part");
     EXPECT_NE(text.find("\n0,-1,1,0,2,3,1,1,0.20000000000000001,0.14999999999999999,"), std::string::npos) << text;
-    EXPECT_NE(text.find(",,3,false\n"), std::string::npos) << "no angle for the root branch: " << text;
+    EXPECT_NE(text.find(",,3,false,0\n"), std::string::npos) << "no angle for the root branch: " << text;
     EXPECT_NE(text.find("\n1,0,2,2,3,2,0.5,0.5,"), std::string::npos) << "the arm, order 2: " << text;
-    EXPECT_NE(text.find(",90,1,false\n"), std::string::npos) << "at right angles to the stem: " << text;
+    EXPECT_NE(text.find(",90,1,false,0\n"), std::string::npos) << "at right angles to the stem: " << text;
 }
 
 TEST(BranchIo, TheJsonTableIsAnArrayOfObjects) {
@@ -57,7 +57,7 @@ TEST(BranchIo, TheJsonTableIsAnArrayOfObjects) {
     EXPECT_EQ(text.front(), '[');
     EXPECT_NE(text.find("{\"branch\": 0, \"parent\": -1, \"order\": 1,"), std::string::npos) << text;
     EXPECT_NE(text.find("\"angle_to_parent\": null"), std::string::npos) << text;
-    EXPECT_NE(text.find("\"closes_loop\": false}\n]"), std::string::npos) << text;
+    EXPECT_NE(text.find("\"closes_loop\": false, \"part\": 0}\n]"), std::string::npos) << text;
 }
 
 TEST(BranchIo, EachPointsBranchAndPlace) {
@@ -74,7 +74,27 @@ TEST(BranchIo, OtherNamesAreRefusedAndNothingIsWritten) {
         EXPECT_FALSE(std::filesystem::exists(dir.file(name))) << name;
     }
     EXPECT_THROW(writePointBranches(stemAndArm(), dir.file("points.json")), InvalidInput);
-    EXPECT_EQ(describe(stemAndArm()), "3 branches (order 1: 2, order 2: 1), 2.1 long in all");
+    // Volume: the stem's cones 0.2 -> 0.15 -> 0.15 (0.0837758), the arm at 0.05 (0.00392699)
+    // and the stem's continuation at 0.1 (0.0188496).
+    EXPECT_EQ(describe(stemAndArm()), "3 branches (order 1: 2, order 2: 1), 2.1 long in all, volume 0.106552");
+}
+
+TEST(BranchIo, TheReportLineGivesEachPartsTotals) {
+    SkeletonGraph g;
+    g.nodes = {Point(0, 0, 0), Point(0, 0, 1), Point(5, 0, 0), Point(5, 0, 2)};
+    g.radii = {0.1, 0.1, 0.2, 0.2};
+    g.edges = {{0, 1}, {2, 3}};
+    const SkeletonBranches b = measureBranches(g);
+    ASSERT_EQ(b.branches.size(), 2u);
+    EXPECT_EQ(b.branches[0].part, 0);
+    EXPECT_EQ(b.branches[1].part, 1);
+    EXPECT_EQ(describe(b), "2 branches (order 1: 2), 3 long in all, volume 0.282743; in 2 parts: part 0 1 branch, 1 long, "
+                           "volume 0.0314159, part 1 1 branch, 2 long, volume 0.251327");
+    const TempDir dir;
+    writeBranchTable(b, dir.file("parts.csv"));
+    const std::string text = contents(dir.file("parts.csv"));
+    EXPECT_NE(text.find(",closes_loop,part\n"), std::string::npos) << text;
+    EXPECT_NE(text.find(",false,1\n"), std::string::npos) << text;
 }
 
 TEST(BranchIo, ASelectionIsDescribedByTheBranchesItLiesOn) {

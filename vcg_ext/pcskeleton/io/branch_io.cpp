@@ -43,6 +43,7 @@ std::vector<Column> columns(const char* none) {
         {"angle_to_parent", [none](std::ostream& o, const Branch& b, std::size_t) { number(o, b.angleToParent, none); }},
         {"points", [](std::ostream& o, const Branch& b, std::size_t) { o << b.points; }},
         {"closes_loop", [](std::ostream& o, const Branch& b, std::size_t) { o << (b.closesLoop ? "true" : "false"); }},
+        {"part", [](std::ostream& o, const Branch& b, std::size_t) { o << b.part; }},
     };
 }
 
@@ -120,14 +121,20 @@ std::string describeBranchesOf(const SkeletonBranches& branches, const std::vect
 }
 
 std::string describe(const SkeletonBranches& branches) {
+    struct Totals {
+        std::size_t count = 0;
+        double length = 0.0, volume = 0.0;
+    };
     std::map<int, std::size_t> perOrder;
-    double length = 0.0;
+    std::map<int, Totals> perPart;
+    Totals all;
     for (const Branch& b : branches.branches) {
         ++perOrder[b.order];
-        length += b.length;
+        for (Totals* t : {&all, &perPart[b.part]}) ++t->count, t->length += b.length, t->volume += b.volume;
     }
     std::ostringstream text;
-    text << counted(branches.branches.size(), "branch", "branches");
+    text.precision(6);
+    text << counted(all.count, "branch", "branches");
     if (!perOrder.empty()) {
         text << " (";
         for (auto it = perOrder.begin(); it != perOrder.end(); ++it) {
@@ -135,8 +142,20 @@ std::string describe(const SkeletonBranches& branches) {
         }
         text << ")";
     }
-    text.precision(6);
-    text << ", " << length << " long in all";
+    text << ", " << all.length << " long in all, volume " << all.volume;
+    if (perPart.size() > 1) {
+        constexpr std::size_t kPartsListed = 10;  // the table's part column has them all
+        text << "; in " << perPart.size() << " parts";
+        std::size_t listed = 0;
+        for (const auto& [part, t] : perPart) {
+            if (listed++ == kPartsListed) {
+                text << ", ...";
+                break;
+            }
+            text << (listed == 1 ? ": " : ", ") << "part " << part << " " << counted(t.count, "branch", "branches") << ", "
+                 << t.length << " long, volume " << t.volume;
+        }
+    }
     return text.str();
 }
 

@@ -28,8 +28,9 @@ void writePointBranches(const SkeletonBranches& branches, const std::string& pat
 // 1.27 long in all" for nodes of several, "" for none. Nodes without a branch are ignored.
 std::string describeBranchesOf(const SkeletonBranches& branches, const std::vector<int>& nodes);
 
-// "7 branches (order 1: 2, order 2: 5), 3.42 long in all" (6 significant digits): the
-// report's line.
+// "7 branches (order 1: 2, order 2: 5), 3.42 long in all, volume 0.12" (6 significant
+// digits), then for a skeleton of several parts "; in 2 parts: part 0 5 branches, 2.1 long,
+// volume 0.1, part 1 ..." (the first ten): the report's line.
 std::string describe(const SkeletonBranches& branches);
 
 }  // namespace pcskeleton

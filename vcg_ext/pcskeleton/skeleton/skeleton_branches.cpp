@@ -264,6 +264,7 @@ SkeletonBranches measureBranches(const SkeletonGraph& skeleton, const BranchOpti
     std::set<Edge> walked;
     const auto walk = [&](int a, int b) { return walked.insert(Edge{std::min(a, b), std::max(a, b)}).second; };
 
+    int part = 0;
     for (int root : partRoots(skeleton, options.up, options.root)) {
         if (neighbours[root].empty()) continue;  // an isolated node has no branch
         reached[root] = true;
@@ -277,6 +278,7 @@ SkeletonBranches measureBranches(const SkeletonGraph& skeleton, const BranchOpti
                 if (!walk(base, next)) continue;
                 Branch branch;
                 branch.parent = parent;
+                branch.part = part;
                 branch.nodes = walkChain(neighbours, base, next);
                 for (std::size_t i = 2; i < branch.nodes.size(); ++i) walk(branch.nodes[i - 1], branch.nodes[i]);
                 if (groups.isInnerBone(branch.nodes) && !reached[branch.nodes.back()]) {
@@ -313,6 +315,7 @@ SkeletonBranches measureBranches(const SkeletonGraph& skeleton, const BranchOpti
             }
         }
         if (branches.size() > first && result.nodeBranch[root] < 0) result.nodeBranch[root] = int(first);
+        ++part;
     }
     assignOrders(branches);
 

@@ -28,6 +28,7 @@ namespace pcskeleton {
 struct Branch {
     std::vector<int> nodes;  // from the base to the tip (the base is on the parent, or the root)
     int parent = -1;         // the branch it grows from; -1 for a branch from its part's root
+    int part = 0;            // the connected part of the skeleton it is in, numbered from 0
     int order = 1;
     bool closesLoop = false;  // it ends where the skeleton was reached already: it closes a loop
     double length = 0.0;      // along the bones (see above), input units
