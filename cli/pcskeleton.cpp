@@ -173,6 +173,7 @@ void printHelp() {
         "  --force               replace output files that exist already (never the input)\n"
         "  --quiet               no progress and no summary on stderr\n"
         "  -h, --help            this text\n"
+        "  --version             the version (the Python module's and the plugins' too)\n"
         "\n"
         "Several inputs (files, folders of point files, globs such as 'scans/*.ply'):\n"
         "  -O FOLDER             write each input's outputs into FOLDER (made if missing);\n"
@@ -405,6 +406,10 @@ bool parseArguments(int argc, char** argv, Options& options) {
             return argv[++i];
         };
         if (arg == "-h" || arg == "--help") return false;
+        if (arg == "--version") {
+            std::printf("pcskeleton %s\n", PCSKELETON_VERSION);
+            std::exit(0);
+        }
         if (arg == "--quiet") {
             options.quiet = true;
         } else if (arg == "--force") {

@@ -91,6 +91,9 @@ def test_input_array_is_not_modified(torus_points):
 
 def test_version_is_the_projects():
     assert pcskeleton.__version__.count(".") == 2 and all(part.isdigit() for part in pcskeleton.__version__.split("."))
+    # The command-line tool's is the same one.
+    cli = subprocess.run([os.environ.get("PCSKELETON_CLI", "pcskeleton"), "--version"], capture_output=True, text=True)
+    assert cli.stdout.strip() == f"pcskeleton {pcskeleton.__version__}", cli.stdout + cli.stderr
 
 
 def test_every_keyword_is_documented_with_its_default():

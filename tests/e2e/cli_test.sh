@@ -153,6 +153,9 @@ grep -q "^Gaps in the data: 1 bridged, 0.[0-9]* long.$" gapped.txt || fail "the 
 $GRAPH check gapped_paper.ply --components 2
 grep -q "^Gaps in the data: off.$" gapped_paper.txt || fail "--gap-limit 0 still bridges"
 
+# --version: the project's version, the one place it is set (CMakeLists.txt's project()).
+expected_version="$(sed -n 's/^project(pcskeleton VERSION \([0-9.]*\) .*/\1/p' "$HERE/../../CMakeLists.txt")"
+[ "$("$PCSKELETON" --version)" = "pcskeleton $expected_version" ] || fail "--version: $("$PCSKELETON" --version), expected $expected_version"
 # --help documents every option with its default.
 "$PCSKELETON" --help >help.txt
 for option in --contracted --correspondence --k --wl --wh --sl --max-wl --max-wh --row-limit --iterations \
