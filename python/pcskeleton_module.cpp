@@ -281,7 +281,7 @@ py::array arrayOwning(std::vector<T> values) {
 // fixed in the environment. Dask's worker processes fix one (MALLOC_TRIM_THRESHOLD_=65536,
 // to hand memory back to the system early), which also pins the mmap threshold at 128 KiB:
 // every large array of a skeletonization is then mapped and unmapped afresh, and an input
-// takes a third longer (docs/benchmarks.md#batches). During one batch input such a process
+// takes markedly longer (docs/benchmarks.md#batches). During one batch input such a process
 // gets the upper bounds of glibc's own adaptive thresholds; afterwards its own settings come
 // back and the memory is handed back at once.
 class BatchInputMemory {

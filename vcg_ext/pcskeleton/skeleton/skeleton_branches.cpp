@@ -56,11 +56,11 @@ struct JunctionGroups {
 // Where a junction's arms meet: the point nearest (least squares) to the lines along its
 // arms (for a group of junctions, the arms of all of them). Contraction leaves a junction's
 // node in the middle of the arms' overlap, beyond the fork, so that measured from it the
-// stem is too long and the arms too short (docs/benchmarks.md#branch-measures). Each arm's line is fitted
-// to its nodes from one to four junction radii away (nearer ones lean towards the
-// junction). The junction's node itself when fewer than two arms give a line, or when that
-// point lies farther from every junction of the group than its radius (it would leave
-// their tubes).
+// stem is too long and the arms too short (docs/benchmarks.md#branch-measures). Each arm's
+// line is fitted to its nodes from one to four junction radii away (nearer ones lean
+// towards the junction). The junction's node itself when fewer than two arms give a line,
+// or when that point lies farther from every junction of the group than its radius (it
+// would leave their tubes).
 Point forkPoint(const SkeletonGraph& skeleton, const std::vector<std::vector<int>>& neighbours,
                 const JunctionGroups& groups, const std::vector<int>& junctions) {
     const Point& node = skeleton.nodes[std::size_t(junctions.front())];
