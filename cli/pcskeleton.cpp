@@ -22,6 +22,8 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <optional>
+#include <set>
 #include <string>
 #include <unistd.h>
 #include <utility>
@@ -242,20 +244,46 @@ int parseInteger(const std::string& option, const std::string& text) {
     return static_cast<int>(value);
 }
 
-// The file a path names, for comparing: its canonical form when it has one.
-std::string canonicalName(const std::string& path) {
+// A path's canonical form; none for a name that cannot be resolved (a symlink loop),
+// which names no other file.
+std::optional<std::string> canonicalPath(const std::string& path) {
     std::error_code error;
     const std::filesystem::path canonical = std::filesystem::weakly_canonical(path, error);
-    return error ? path : canonical.string();
+    if (error) return std::nullopt;
+    return canonical.string();
 }
+
+// The file a path names, for comparing: its canonical form when it has one.
+std::string canonicalName(const std::string& path) { return canonicalPath(path).value_or(path); }
 
 bool samePath(const std::string& a, const std::string& b) {
     if (sameFile(a, b)) return true;
-    std::error_code first, second;  // a name that cannot be resolved (a symlink loop) names no other file
-    const std::filesystem::path x = std::filesystem::weakly_canonical(a, first);
-    const std::filesystem::path y = std::filesystem::weakly_canonical(b, second);
-    return !first && !second && x == y;
+    const std::optional<std::string> x = canonicalPath(a);
+    return x && x == canonicalPath(b);
 }
+
+// The files some paths name, each looked up once, to ask of many other paths whether they
+// name one of them (as samePath would with each): a batch checks every output against
+// every input, and pairwise that grows with the square of a batch.
+class PathSet {
+public:
+    explicit PathSet(const std::vector<std::string>& paths) {
+        for (const std::string& path : paths) {
+            if (const auto identity = fileIdentity(path)) identities_.insert(*identity);
+            if (const auto name = canonicalPath(path)) names_.insert(*name);
+        }
+    }
+    bool holds(const std::string& path) const {
+        const auto identity = fileIdentity(path);
+        if (identity && identities_.count(*identity)) return true;
+        const auto name = canonicalPath(path);
+        return name && names_.count(*name);
+    }
+
+private:
+    std::set<FileIdentity> identities_;
+    std::set<std::string> names_;
+};
 
 // Every output option and its file (with several inputs, its name pattern); -o first.
 std::vector<std::pair<std::string, std::string>> outputOptions(const Options& options) {
@@ -340,6 +368,7 @@ void checkBatch(Options& options) {
         }
     }
     const std::vector<std::string> stems = outputStems(inputs);
+    const PathSet inputFiles(inputs);
     std::map<std::string, std::string> outputOf;  // each output file: the input it is for
     for (std::size_t i = 0; i < inputs.size(); ++i) {
         pcskeleton_cli::BatchInput batchInput{inputs[i], {}};
@@ -347,11 +376,9 @@ void checkBatch(Options& options) {
             if (pattern.empty()) continue;
             const std::string path = (std::filesystem::path(options.outputFolder) /
                                       fromPattern(pattern, stems[i])).string();
-            for (const std::string& input : inputs) {
-                if (samePath(path, input)) {
-                    throw UsageError(option + " would write '" + path + "', which is an input; choose another -O or " +
-                                     option + " (inputs are never overwritten)");
-                }
+            if (inputFiles.holds(path)) {
+                throw UsageError(option + " would write '" + path + "', which is an input; choose another -O or " +
+                                 option + " (inputs are never overwritten)");
             }
             if (!outputOf.emplace(canonicalName(path), inputs[i]).second) {
                 throw UsageError("two outputs would be '" + path + "'; give each output option its own pattern");
@@ -362,9 +389,7 @@ void checkBatch(Options& options) {
     }
     if (!options.summary.empty()) {
         if (extensionOf(options.summary) != "csv") throw UsageError("the summary must end in .csv");
-        for (const std::string& input : inputs) {
-            if (samePath(options.summary, input)) throw UsageError("--summary '" + options.summary + "' is an input");
-        }
+        if (inputFiles.holds(options.summary)) throw UsageError("--summary '" + options.summary + "' is an input");
         if (outputOf.count(canonicalName(options.summary))) {
             throw UsageError("--summary '" + options.summary + "' is also one of the outputs");
         }

@@ -10,7 +10,9 @@
 #include <cstdio>
 #include <functional>
 #include <iosfwd>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace pcskeleton {
@@ -82,6 +84,11 @@ std::string decimalCommaHint(const std::string& line);
 
 // The lower-case extension of a file name without the dot ("" if none).
 std::string extensionOf(const std::string& path);
+
+// Which existing file a name leads to (device and inode: hard links and "./a" vs "a" lead
+// to one); none when it does not exist.
+using FileIdentity = std::pair<std::uint64_t, std::uint64_t>;
+std::optional<FileIdentity> fileIdentity(const std::string& path);
 
 // True when both names lead to the same existing file (hard links and "./a" vs "a"
 // included); false when either does not exist.
