@@ -112,8 +112,12 @@ def skeletonize_files(paths, out_dir, client=None, *, jobs=None, force=False, pr
     _pcskeleton._check_skeleton_parameters(parameters, "skeletonize_files")
     os.makedirs(out_dir, exist_ok=True)
     outputs = [os.path.join(os.fspath(out_dir), f"{stem}_skeleton.ply") for stem in _pcskeleton._output_stems(inputs)]
-    for output in outputs:
-        if os.path.exists(output) and any(os.path.exists(path) and os.path.samefile(output, path) for path in inputs):
+    # Each input's file (device and inode, as os.path.samefile compares them) looked up once:
+    # outputs against inputs pairwise would grow with the square of the batch.
+    input_files = {(status.st_dev, status.st_ino) for status in map(os.stat, filter(os.path.exists, inputs))}
+    for output in filter(os.path.exists, outputs):
+        status = os.stat(output)
+        if (status.st_dev, status.st_ino) in input_files:
             raise ValueError(f"'{output}' would be written over an input; choose another out_dir.")
 
     rows = [None] * len(inputs)
@@ -124,13 +128,14 @@ def skeletonize_files(paths, out_dir, client=None, *, jobs=None, force=False, pr
         else:
             tasks.append((index, functools.partial(_skeletonize_one, path, output, parameters, force)))
 
-    finished = [sum(row is not None for row in rows)]
+    finished = sum(row is not None for row in rows)
 
     def record(index, row):
+        nonlocal finished
         rows[index] = row
-        finished[0] += 1
+        finished += 1
         if progress is not None:
-            progress(100 * finished[0] // len(rows), f"{row['input']}: {row['status']}")
+            progress(100 * finished // len(rows), f"{row['input']}: {row['status']}")
 
     if tasks and client is None:
         _run_locally(tasks, jobs or os.cpu_count() or 1, record)

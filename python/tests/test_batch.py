@@ -74,6 +74,14 @@ def test_bad_requests_are_refused_before_any_work(scans, tmp_path):
     with pytest.raises(ValueError, match="matches no file"):
         pcskeleton.skeletonize_files(str(scans / "*.nothing"), str(tmp_path / "b"))
     assert not (tmp_path / "a").exists() and not (tmp_path / "b").exists()
+    # An input that is another input's output: refused, and both files are left as they were.
+    folder = tmp_path / "same"
+    folder.mkdir()
+    pcskeleton.write_points(shapes.torus(count=1500, seed=0), str(folder / "ring.xyz"))
+    (folder / "ring_skeleton.ply").write_text("not written over\n")
+    with pytest.raises(ValueError, match="would be written over an input"):
+        pcskeleton.skeletonize_files([str(folder / "ring.xyz"), str(folder / "ring_skeleton.ply")], str(folder), force=True)
+    assert (folder / "ring_skeleton.ply").read_text() == "not written over\n"
 
 
 def test_the_module_imports_without_dask_and_says_what_to_install(scans, tmp_path):
