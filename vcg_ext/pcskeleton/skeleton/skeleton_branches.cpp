@@ -163,8 +163,8 @@ std::vector<double> boneLengths(const std::vector<Point>& course) {
 }
 
 // The radius of a branch at each of its nodes. A junction's node holds points of all its
-// arms, and their mean distance measures the knot's spread, not a tube: at a junction (of a knot) the branch has the radius of its nearest node
-// outside it.
+// arms, and their mean distance measures the knot's spread, not a tube: at a junction (of
+// a knot) the branch has the radius of its nearest node outside it.
 std::vector<double> branchRadii(const SkeletonGraph& skeleton, const JunctionGroups& groups, const std::vector<int>& path) {
     std::vector<double> radii;
     for (int n : path) radii.push_back(skeleton.radii[std::size_t(n)]);
@@ -197,21 +197,15 @@ void measureShape(const std::vector<double>& radii, const std::vector<Point>& co
     branch.meanRadius = branch.length > 0.0 ? radiusLength / branch.length : branch.baseRadius;
 }
 
-// The place halfway along a course (by length).
-std::size_t halfway(const std::vector<Point>& course, double length) {
+// The node halfway along a branch (by length), from its bones' lengths.
+std::size_t halfway(const std::vector<double>& bones, double length) {
     double along = 0.0;
-    for (std::size_t i = 1; i < course.size(); ++i) {
-        along += (course[i] - course[i - 1]).norm();
+    for (std::size_t i = 1; i < bones.size(); ++i) {
+        along += bones[i];
         if (along >= length / 2.0) return i;
     }
-    return course.size() - 1;
+    return bones.size() - 1;
 }
-
-// The direction a branch leaves its base, and the one it has at its tip, each over half
-// its length: the nodes next to a junction lean towards it, so a bone or two there tells
-// little.
-Point startDirection(const std::vector<Point>& course, double length) { return course[halfway(course, length)] - course.front(); }
-Point endDirection(const std::vector<Point>& course, double length) { return course.back() - course[halfway(course, length)]; }
 
 // At each junction the main axis goes on into the child with the longest continuation (the
 // lower-numbered among equals).
@@ -255,7 +249,10 @@ SkeletonBranches measureBranches(const SkeletonGraph& skeleton, const BranchOpti
     for (std::size_t n = 0; n < count; ++n) {
         if (groups.group[n] >= 0) forks[n] = groupFork[std::size_t(groups.group[n])];
     }
-    std::vector<std::vector<Point>> courses;  // per branch
+    // Per branch, the direction it has at its tip, over the half of it that ends there: the
+    // nodes next to a junction lean towards it, so a bone or two there tells little. Its
+    // children's angles are measured from it, to their own directions over their first half.
+    std::vector<Point> endDirections;
     SkeletonBranches result;
     std::vector<Branch>& branches = result.branches;
     result.nodeBranch.assign(count, -1);
@@ -293,10 +290,11 @@ SkeletonBranches measureBranches(const SkeletonGraph& skeleton, const BranchOpti
                     continue;
                 }
                 branch.closesLoop = reached[branch.nodes.back()];
-                courses.push_back(courseOf(forks, branch.nodes));
-                const std::vector<Point>& course = courses.back();
+                const std::vector<Point> course = courseOf(forks, branch.nodes);
                 const std::vector<double> bones = boneLengths(course);
                 measureShape(branchRadii(skeleton, groups, branch.nodes), course, bones, branch);
+                const Point middle = course[halfway(bones, branch.length)];
+                endDirections.push_back(course.back() - middle);
                 const int index = int(branches.size());
                 double along = 0.0;
                 for (std::size_t i = 1; i < branch.nodes.size(); ++i) {
@@ -309,8 +307,7 @@ SkeletonBranches measureBranches(const SkeletonGraph& skeleton, const BranchOpti
                     junctions.push_back({branch.nodes.back(), index});
                 }
                 branch.angleToParent = parent < 0 ? std::numeric_limits<double>::quiet_NaN()
-                                                  : angleDegrees(endDirection(courses[std::size_t(parent)], branches[parent].length),
-                                                                 startDirection(course, branch.length));
+                                                  : angleDegrees(endDirections[std::size_t(parent)], middle - course.front());
                 branches.push_back(std::move(branch));
             }
         }
