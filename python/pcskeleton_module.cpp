@@ -670,18 +670,12 @@ PYBIND11_MODULE(_pcskeleton, m) {
             [](const py::tuple& state) {
                 if (state.size() != 7) throw InvalidInput("Not a pickled pcskeleton.Skeleton.");
                 PySkeleton s;
-                SkeletonGraph& g = s.graph;
-                g.nodes = pointsFrom(state[0].cast<DoubleArray>(), "nodes");
-                g.edges = indexRowsFrom<2>(state[1], "edges");
-                const DoubleArray radii = state[2].cast<DoubleArray>();
-                g.radii.assign(radii.data(), radii.data() + radii.size());
-                std::vector<py::ssize_t> shape;
-                g.pointNode = indicesFrom(state[3], "correspondence", shape);
-                g.inferred = indexRowsFrom<2>(state[4], "inferred");
+                s.graph = graphFromArrays(state[0].cast<DoubleArray>(), state[1], state[2], state[3]);
+                s.graph.inferred = indexRowsFrom<2>(state[4], "inferred");
+                const std::string problem = invariantViolation(s.graph);  // the inferred bones among the edges
+                if (!problem.empty()) throw InvalidInput("Not a valid pickled skeleton: " + problem + ".");
                 if (!state[5].is_none()) s.contracted = pointsFrom(state[5].cast<DoubleArray>(), "contracted");
                 s.report = state[6];
-                const std::string problem = invariantViolation(g);
-                if (!problem.empty()) throw InvalidInput("Not a valid pickled skeleton: " + problem + ".");
                 return s;
             }));
 
