@@ -15,8 +15,10 @@ add_custom_target(meshlab_prefix ALL
   COMMENT "Setting up the MeshLab prefix in ${MESHLAB_PREFIX}"
   VERBATIM)
 
-# Everyday use: sudo cmake --install build  (into Debian's MeshLab plugin directory).
-install(TARGETS filter_pcskeleton edit_skeleton LIBRARY DESTINATION "${MESHLAB_SYSTEM_DIR}/plugins")
+# Everyday use: sudo cmake --install build  (into Debian's MeshLab plugin directory, the
+# only one MeshLab loads system plugins from, whatever the prefix: the component `meshlab`;
+# the others, `cli`, `python` and `dev`, go under the prefix).
+install(TARGETS filter_pcskeleton edit_skeleton LIBRARY DESTINATION "${MESHLAB_SYSTEM_DIR}/plugins" COMPONENT meshlab)
 
 # Without root, MeshLab 2021+ only: cmake --install build-2022 --component user-plugins
 # puts the plugins in MeshLab's per-user plugin folder, read when the installing user runs

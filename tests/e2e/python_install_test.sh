@@ -5,7 +5,8 @@
 set -euo pipefail
 BUILD="$1"; PYTHON="$2"; WORK="$3"
 rm -rf "$WORK"; mkdir -p "$WORK"
-cmake --install "$BUILD" --prefix "$WORK/prefix" >/dev/null
+# Only the Python part: the plugins would go to MeshLab's own folder whatever the prefix.
+cmake --install "$BUILD" --prefix "$WORK/prefix" --component python >/dev/null
 site="$(find "$WORK/prefix/lib" -maxdepth 2 -name dist-packages -type d)"
 [ -f "$site/pcskeleton/__init__.py" ] || { echo "FAIL: no pcskeleton package under $WORK/prefix/lib"; exit 1; }
 # The prefix's dist-packages is the one Debian's python3 searches for its prefix (/usr/local).
