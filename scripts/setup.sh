@@ -22,7 +22,7 @@ PACKAGES=(
   qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev libglew-dev libglu1-mesa-dev
   libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   libsuitesparse-dev libopenblas0-pthread libgtest-dev
-  meshlab dpkg-dev
+  meshlab dpkg-dev help2man lintian
   xvfb xauth xdotool imagemagick python3 python3-matplotlib python3-pil python3-numpy
   python3-dev pybind11-dev python3-pytest python3-networkx python3-open3d
   python3-distributed

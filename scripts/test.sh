@@ -10,11 +10,20 @@
 # On Debian 12 it also runs the README's two commands on Debian 13 in a clean clone of the
 # last commit (scripts/test_debian13_native.sh). CTest arguments ("-R io", ...) apply to
 # every run; PCSKELETON_NEWER_MESHLAB=0 skips the newer MeshLab versions and Debian 13,
-# PCSKELETON_SANITIZE=0 the sanitizer run.
+# PCSKELETON_SANITIZE=0 the sanitizer run. After the main build's tests it makes the Debian
+# packages and checks them on a clean Debian of this release (scripts/make_packages.sh,
+# scripts/test_packages.sh); PCSKELETON_PACKAGES=0 skips that.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bash "$ROOT/scripts/build.sh"
 (cd "$ROOT/build" && ctest --output-on-failure -j1 "$@")
+
+if [ "${PCSKELETON_PACKAGES:-1}" != 0 ]; then
+  if [ "$(id -u)" -eq 0 ]; then SUDO=(); else SUDO=(sudo); fi  # debootstrap and chroot
+  echo "== The Debian packages (build-deb/), installed and used on a clean Debian"
+  bash "$ROOT/scripts/make_packages.sh" "$ROOT/build-deb/debs"
+  "${SUDO[@]}" bash "$ROOT/scripts/test_packages.sh" "$ROOT/build-deb/debs"
+fi
 
 if [ "${PCSKELETON_NEWER_MESHLAB:-1}" != 0 ]; then
   if [ "$(id -u)" -eq 0 ]; then SUDO=(); else SUDO=(sudo); fi  # chroot and mounts

@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # The README's two commands on Debian 13 "trixie", whose own MeshLab is 2022.02: a clean
 # clone of this checkout inside the trixie environment of scripts/meshlab_env.sh runs
-# scripts/demo.sh, then scripts/test.sh (there without the nested newer-MeshLab runs,
-# which need chroots of their own, and without the sanitizer pass, which the Debian 12 run
-# makes on the same code: 8 of this run's 18 minutes on a cold CI machine). Needs root;
-# scripts/test.sh runs it on bookworm.
+# scripts/demo.sh, then scripts/test.sh: there without the nested newer-MeshLab runs and
+# the packages' clean-system check, which need chroots of their own, and without the
+# sanitizer pass, which the Debian 12 run makes on the same code (8 of this run's 18
+# minutes on a cold CI machine). Needs root; scripts/test.sh runs it on bookworm.
 # usage: scripts/test_debian13_native.sh [ctest arguments]
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -28,7 +28,7 @@ trap 'mountpoint -q "$CHROOT/tmp/shared" && umount "$CHROOT/tmp/shared"; chroot_
 
 start=$SECONDS
 chroot "$CHROOT" /usr/bin/env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin HOME=/root LANG=C.UTF-8 \
-  CCACHE_DIR=/var/cache/ccache PCSKELETON_NEWER_MESHLAB=0 PCSKELETON_SANITIZE=0 bash -euo pipefail -c '
+  CCACHE_DIR=/var/cache/ccache PCSKELETON_NEWER_MESHLAB=0 PCSKELETON_SANITIZE=0 PCSKELETON_PACKAGES=0 bash -euo pipefail -c '
   cd "$1"; shift
   scripts/demo.sh
   grep -q "MeshLab 2022.02" build/CMakeCache.txt 2>/dev/null || grep -q "2022.02" deps/meshlab-src/ML_VERSION
