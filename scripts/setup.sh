@@ -25,7 +25,7 @@ PACKAGES=(
   meshlab dpkg-dev help2man lintian
   xvfb xauth xdotool imagemagick python3 python3-matplotlib python3-pil python3-numpy
   python3-dev pybind11-dev python3-pytest python3-networkx python3-open3d
-  python3-distributed
+  python3-distributed python3-venv python3-pip python3-build python3-setuptools python3-wheel
   libcgal-demo
   locales
 )
