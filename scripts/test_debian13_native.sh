@@ -4,7 +4,9 @@
 # scripts/demo.sh, then scripts/test.sh: there without the nested newer-MeshLab runs and
 # the packages' clean-system check, which need chroots of their own, and without the
 # sanitizer pass, which the Debian 12 run makes on the same code (8 of this run's 18
-# minutes on a cold CI machine). Needs root; scripts/test.sh runs it on bookworm.
+# minutes on a cold CI machine). Then it makes the Debian 13 packages in the clone and
+# checks them on a clean Debian 13 (scripts/test_packages.sh). Needs root;
+# scripts/test.sh runs it on bookworm.
 # usage: scripts/test_debian13_native.sh [ctest arguments]
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -33,5 +35,9 @@ chroot "$CHROOT" /usr/bin/env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin HOME=/root L
   scripts/demo.sh
   grep -q "MeshLab 2022.02" build/CMakeCache.txt 2>/dev/null || grep -q "2022.02" deps/meshlab-src/ML_VERSION
   scripts/test.sh "$@"
+  scripts/make_packages.sh build-deb/debs
 ' _ "$CLONE" "$@"
-echo "Debian 13 (MeshLab 2022.02), the README's two commands: $((SECONDS - start)) s"
+echo "Debian 13 (MeshLab 2022.02), the README's two commands and the packages: $((SECONDS - start)) s"
+# The Debian 13 packages made there, on a clean Debian 13 (from here: it needs a chroot).
+chroot_unmount "$CHROOT"
+bash "$ROOT/scripts/test_packages.sh" "$CHROOT$CLONE/build-deb/debs" trixie

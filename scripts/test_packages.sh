@@ -3,8 +3,8 @@
 # from Debian's archive (debootstrap --variant=minbase, cached in /var/cache/pcskeleton and
 # copied afresh for every run), gets them with `apt-get install ./*.deb` and nothing else
 # of ours, then checks there what a user would do:
-#   - MeshLab's own plugin loader (meshlabserver, MeshLab 2020.09) loads both plugins, and
-#     the shipped skeleton script runs through it on an example;
+#   - MeshLab's own plugin loader loads both plugins (meshlabserver with MeshLab 2020.09,
+#     meshlab-run with 2021+), and the shipped skeleton script runs through it on an example;
 #   - `pcskeleton --version` says the packages' version, `man pcskeleton` exists, and a run
 #     on an example gives the right skeleton;
 #   - `import pcskeleton` and a skeleton from numpy;
@@ -12,13 +12,15 @@
 #   - `apt-get purge` leaves no file of ours behind.
 # The check's own tools (xvfb for meshlabserver's OpenGL, cmake and g++ for the C++
 # program) are installed after ours. Needs root (debootstrap, chroot).
-# usage: scripts/test_packages.sh DEB_DIR     (the packages of scripts/make_packages.sh)
+# usage: scripts/test_packages.sh DEB_DIR [SUITE]   (the packages of scripts/make_packages.sh,
+#        made on Debian SUITE: this machine's release by default; trixie's come from
+#        scripts/test_debian13_native.sh)
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 DEBS="$(cd "${1:?usage: $0 DEB_DIR}" && pwd)"
 [ "$(id -u)" -eq 0 ] || { echo "test_packages.sh needs root (debootstrap, chroot): run it with sudo" >&2; exit 1; }
 ls "$DEBS"/*.deb >/dev/null 2>&1 || { echo "no .deb in $DEBS: run scripts/make_packages.sh first" >&2; exit 1; }
-SUITE="$(. /etc/os-release && echo "$VERSION_CODENAME")"
+SUITE="${2:-$(. /etc/os-release && echo "$VERSION_CODENAME")}"
 ENV_DIR="${PCSKELETON_ENV_DIR:-/var/cache/pcskeleton}"
 BASE="$ENV_DIR/$SUITE-minbase" CLEAN="$ENV_DIR/$SUITE-clean" ARCHIVES="$ENV_DIR/$SUITE-archives"
 log() { printf '[test_packages] %s\n' "$*" >&2; }
@@ -80,13 +82,29 @@ assert pcskeleton.__version__ == \"${version%-*}\", pcskeleton.__version__
 s = pcskeleton.skeletonize(np.loadtxt(\"/tmp/torus.xyz\"))
 assert s.report[\"topology\"][\"cycles\"] == 1, s.report[\"text\"]"
 
-  step "MeshLab loads both plugins; the shipped script runs through meshlabserver"
-  QT_DEBUG_PLUGINS=1 xvfb-run -a meshlabserver -i /tmp/torus.xyz -o /tmp/meshlab_out.ply \
-    -s /usr/share/pcskeleton/scripts/compute_curve_skeleton.mlx >/tmp/meshlab.log 2>&1 || { tail -40 /tmp/meshlab.log; fail "meshlabserver"; }
-  for plugin in libfilter_pcskeleton libedit_skeleton; do
-    grep -q "loaded library \".*/meshlab/plugins/$plugin.so\"" /tmp/meshlab.log || { grep -i "skeleton" /tmp/meshlab.log | head; fail "MeshLab did not load $plugin"; }
-  done
-  grep -q "1 cycle" /tmp/meshlab.log || { tail -30 /tmp/meshlab.log; fail "the script gave no one-cycle skeleton"; }
+  script=/usr/share/pcskeleton/scripts/compute_curve_skeleton.mlx
+  if command -v meshlabserver >/dev/null; then  # MeshLab 2020.09: Qt names what it loads
+    step "MeshLab loads both plugins; the shipped script runs through meshlabserver"
+    QT_DEBUG_PLUGINS=1 xvfb-run -a meshlabserver -i /tmp/torus.xyz -o /tmp/meshlab_out.ply -s "$script" \
+      >/tmp/meshlab.log 2>&1 || { tail -40 /tmp/meshlab.log; fail "meshlabserver"; }
+    for plugin in libfilter_pcskeleton libedit_skeleton; do
+      grep -q "loaded library \".*/meshlab/plugins/$plugin.so\"" /tmp/meshlab.log \
+        || { grep -i "skeleton" /tmp/meshlab.log | head; fail "MeshLab did not load $plugin"; }
+    done
+  else  # MeshLab 2021+: meshlab-run, from meshlab-pcskeleton, asks MeshLab'"'"'s plugin manager
+    step "MeshLab loads both plugins; the shipped script runs through meshlab-run"
+    meshlab-run --list-plugins >/tmp/plugins.txt 2>&1 || { cat /tmp/plugins.txt; fail "meshlab-run --list-plugins"; }
+    for plugin in FilterPCSkeleton:libfilter_pcskeleton EditSkeleton:libedit_skeleton; do
+      grep -q "^${plugin%%:*}	/usr/lib/.*/meshlab/plugins/${plugin#*:}.so" /tmp/plugins.txt \
+        || { cat /tmp/plugins.txt; fail "MeshLab did not load ${plugin#*:}"; }
+    done
+    xvfb-run -a meshlab-run -i /tmp/torus.xyz -s "$script" >/tmp/meshlab.log 2>&1 || { tail -40 /tmp/meshlab.log; fail "meshlab-run"; }
+  fi
+  # The script writes the skeleton beside its input.
+  python3 -c "
+import pcskeleton
+s = pcskeleton.read_skeleton(\"/tmp/torus_skeleton.ply\")
+assert s.topology[\"cycles\"] == 1, s.topology" || { tail -30 /tmp/meshlab.log; fail "the script gave no one-cycle skeleton"; }
 
   step "a C++ program with find_package(pcskeleton)"
   cmake -S /tmp/cxx -B /tmp/cxx-build -DCMAKE_BUILD_TYPE=Release >/tmp/cxx.log 2>&1 && cmake --build /tmp/cxx-build >>/tmp/cxx.log 2>&1 \
