@@ -26,9 +26,11 @@ set(deb_name_dev libpcskeleton-dev)
 set(deb_name_python python3-pcskeleton)
 set(deb_name_meshlab meshlab-pcskeleton)
 
-# Each package's copyright and changelog, where Debian looks for them.
+# Each package's name, and its copyright and changelog where Debian looks for them.
 foreach(component IN LISTS deb_components)
   set(package "${deb_name_${component}}")
+  string(TOUPPER "${component}" c)
+  set(CPACK_DEBIAN_${c}_PACKAGE_NAME "${package}")
   set(changelog "${PROJECT_BINARY_DIR}/packaging/${package}/changelog.Debian")
   string(TIMESTAMP date "%a, %d %b %Y %H:%M:%S +0000" UTC)
   file(WRITE "${changelog}"
@@ -56,15 +58,10 @@ set(CPACK_DEBIAN_PACKAGE_RELEASE "${PCSKELETON_DEB_REVISION}")
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
-set(CPACK_DEBIAN_PACKAGE_HOMEPAGE "")
 set(CPACK_PACKAGE_DIRECTORY "${PROJECT_BINARY_DIR}/packages")
 
 # CPack indents each line of a description by one space and an empty line becomes " .".
 set(about "Curve skeletons of point clouds by Laplacian-based contraction (Cao,\nTagliasacchi, Olson, Zhang and Su, SMI 2010): a scan contracted and thinned\ninto a 1-D graph with a radius per node and a node per point, robust to\nnoise, outliers, missing data and one-sided scans; and a surface rebuilt\nto follow the skeleton.")
-foreach(component IN LISTS deb_components)
-  string(TOUPPER "${component}" c)
-  set(CPACK_DEBIAN_${c}_PACKAGE_NAME "${deb_name_${component}}")
-endforeach()
 
 set(CPACK_COMPONENT_CLI_DESCRIPTION "curve skeletons of point clouds - command-line tool\n${about}\n\nThis package has the command-line tool pcskeleton.")
 set(CPACK_COMPONENT_DEV_DESCRIPTION "curve skeletons of point clouds - C++ library\n${about}\n\nThis package has the static library, its headers and its CMake package:\nfind_package(pcskeleton CONFIG) gives the target pcskeleton::pcskeleton.")

@@ -40,13 +40,6 @@ PACKAGES=(
 )
 [ "$SUITE" = trixie ] && PACKAGES+=(libxerces-c3.2t64)
 
-# The mirror the machine itself uses for Debian's packages.
-mirror() {
-  local uri
-  uri="$(grep -rhsoE '^URIs:[[:space:]]*http[^[:space:]]*debian/?$' /etc/apt/sources.list.d/ | head -1 | awk '{print $2}')"
-  [ -n "$uri" ] || uri="$(grep -hsoE '^deb[[:space:]]+http[^[:space:]]*debian/?[[:space:]]' /etc/apt/sources.list | head -1 | awk '{print $2}')"
-  echo "${uri:-http://deb.debian.org/debian}"
-}
 
 source "$ROOT/scripts/chroot_mounts.sh"
 
@@ -59,7 +52,7 @@ if [ -f "$STAMP" ] && [ "$(cat "$STAMP")" = "$ENV_REVISION" ]; then
 fi
 
 command -v debootstrap >/dev/null || { apt-get update -qq; apt-get install -y -qq debootstrap >/dev/null; }
-MIRROR="$(mirror)"
+MIRROR="$(debian_mirror)"
 mkdir -p "$ENV_DIR"
 if [ ! -x "$CHROOT/usr/bin/apt-get" ]; then
   log "creating the Debian $SUITE environment in $CHROOT from $MIRROR (about a minute)"

@@ -15,18 +15,17 @@
 # scripts/test_packages.sh); PCSKELETON_PACKAGES=0 skips that.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+if [ "$(id -u)" -eq 0 ]; then SUDO=(); else SUDO=(sudo); fi  # chroots, mounts, debootstrap
 bash "$ROOT/scripts/build.sh"
 (cd "$ROOT/build" && ctest --output-on-failure -j1 "$@")
 
 if [ "${PCSKELETON_PACKAGES:-1}" != 0 ]; then
-  if [ "$(id -u)" -eq 0 ]; then SUDO=(); else SUDO=(sudo); fi  # debootstrap and chroot
   echo "== The Debian packages (build-deb/), installed and used on a clean Debian"
   bash "$ROOT/scripts/make_packages.sh" "$ROOT/build-deb/debs"
   "${SUDO[@]}" bash "$ROOT/scripts/test_packages.sh" "$ROOT/build-deb/debs"
 fi
 
 if [ "${PCSKELETON_NEWER_MESHLAB:-1}" != 0 ]; then
-  if [ "$(id -u)" -eq 0 ]; then SUDO=(); else SUDO=(sudo); fi  # chroot and mounts
   main_version="$(cut -c1-4 "$ROOT/deps/meshlab-src/ML_VERSION")"  # the build above: 2020 or 2022
   for version in 2022 2025; do
     [ "$version" != "$main_version" ] || continue

@@ -28,8 +28,8 @@ log() { printf '[test_packages] %s\n' "$*" >&2; }
 source "$ROOT/scripts/chroot_mounts.sh"
 if [ ! -f "$BASE/.pcskeleton-ready" ]; then
   command -v debootstrap >/dev/null || { apt-get update -qq; apt-get install -y -qq debootstrap >/dev/null; }
-  mirror="$(grep -rhsoE '^URIs:[[:space:]]*http[^[:space:]]*debian/?$' /etc/apt/sources.list.d/ | head -1 | awk '{print $2}')"
-  log "creating a minimal Debian $SUITE in $BASE from ${mirror:=http://deb.debian.org/debian}"
+  mirror="$(debian_mirror)"
+  log "creating a minimal Debian $SUITE in $BASE from $mirror"
   rm -rf "$BASE"
   debootstrap --variant=minbase "$SUITE" "$BASE" "$mirror" >&2
   printf 'Types: deb\nURIs: %s\nSuites: %s %s-updates\nComponents: main\nSigned-By: /usr/share/keyrings/debian-archive-keyring.gpg\n' \
@@ -39,15 +39,18 @@ if [ ! -f "$BASE/.pcskeleton-ready" ]; then
 fi
 
 log "a fresh copy of the minimal Debian $SUITE in $CLEAN"
+unmount_clean() { umount "$CLEAN/var/cache/apt/archives" 2>/dev/null || true; chroot_unmount "$CLEAN"; }
+unmount_clean  # a killed run's binds (its /dev) must not be deleted with its copy
 rm -rf "$CLEAN"
 cp -a "$BASE" "$CLEAN"
 mkdir -p "$ARCHIVES" "$CLEAN/var/cache/apt/archives" "$CLEAN/tmp/debs"
 cp "$DEBS"/*.deb "$CLEAN/tmp/debs/"
 cp -r "$ROOT/tests/package" "$CLEAN/tmp/cxx"
+cp "$ROOT/tests/e2e/make_ring.py" "$CLEAN/tmp/"
 cp /etc/resolv.conf "$CLEAN/etc/resolv.conf" 2>/dev/null || true
 chroot_mount "$CLEAN"
 mount --bind "$ARCHIVES" "$CLEAN/var/cache/apt/archives"  # downloads kept between runs
-trap 'umount "$CLEAN/var/cache/apt/archives" 2>/dev/null; chroot_unmount "$CLEAN"; rm -rf "$CLEAN"' EXIT
+trap 'unmount_clean; rm -rf "$CLEAN"' EXIT
 
 version="$(dpkg-deb -f "$(ls "$DEBS"/pcskeleton_*.deb | head -1)" Version)"
 chroot "$CLEAN" /usr/bin/env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin HOME=/root LANG=C.UTF-8 \
@@ -67,11 +70,8 @@ chroot "$CLEAN" /usr/bin/env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin HOME=/root LA
   step "pcskeleton --version, man page, a torus"
   [ "$(pcskeleton --version)" = "pcskeleton ${version%-*}" ] || fail "pcskeleton --version: $(pcskeleton --version), packages: $version"
   [ -f /usr/share/man/man1/pcskeleton.1.gz ] || fail "no man page"
-  python3 -c "
-import numpy as np
-t, u = np.meshgrid(np.linspace(0, 2 * np.pi, 60, endpoint=False), np.linspace(0, 2 * np.pi, 30, endpoint=False))
-np.savetxt(\"/tmp/torus.xyz\", np.stack([(1 + 0.25 * np.cos(u)) * np.cos(t), (1 + 0.25 * np.cos(u)) * np.sin(t), 0.25 * np.sin(u)], -1).reshape(-1, 3))"
-  pcskeleton /tmp/torus.xyz -o /tmp/cli.ply --report /tmp/cli.txt >/tmp/cli.log 2>&1 || { cat /tmp/cli.log; fail "pcskeleton on a torus"; }
+  python3 /tmp/make_ring.py 0.25 --torus  # /tmp/torus.ply: 6000 points of a torus
+  pcskeleton /tmp/torus.ply -o /tmp/cli.ply --report /tmp/cli.txt >/tmp/cli.log 2>&1 || { cat /tmp/cli.log; fail "pcskeleton on a torus"; }
   grep -q "1 cycle" /tmp/cli.txt || { cat /tmp/cli.txt; fail "the torus has no cycle"; }
 
   step "python3: import pcskeleton, a skeleton from numpy"
@@ -79,13 +79,13 @@ np.savetxt(\"/tmp/torus.xyz\", np.stack([(1 + 0.25 * np.cos(u)) * np.cos(t), (1 
 import numpy as np, pcskeleton
 assert pcskeleton.__file__.startswith(\"/usr/lib/python3/dist-packages/\"), pcskeleton.__file__
 assert pcskeleton.__version__ == \"${version%-*}\", pcskeleton.__version__
-s = pcskeleton.skeletonize(np.loadtxt(\"/tmp/torus.xyz\"))
+s = pcskeleton.skeletonize(pcskeleton.read_points(\"/tmp/torus.ply\"))
 assert s.report[\"topology\"][\"cycles\"] == 1, s.report[\"text\"]"
 
   script=/usr/share/pcskeleton/scripts/compute_curve_skeleton.mlx
   if command -v meshlabserver >/dev/null; then  # MeshLab 2020.09: Qt names what it loads
     step "MeshLab loads both plugins; the shipped script runs through meshlabserver"
-    QT_DEBUG_PLUGINS=1 xvfb-run -a meshlabserver -i /tmp/torus.xyz -o /tmp/meshlab_out.ply -s "$script" \
+    QT_DEBUG_PLUGINS=1 xvfb-run -a meshlabserver -i /tmp/torus.ply -o /tmp/meshlab_out.ply -s "$script" \
       >/tmp/meshlab.log 2>&1 || { tail -40 /tmp/meshlab.log; fail "meshlabserver"; }
     for plugin in libfilter_pcskeleton libedit_skeleton; do
       grep -q "loaded library \".*/meshlab/plugins/$plugin.so\"" /tmp/meshlab.log \
@@ -98,7 +98,7 @@ assert s.report[\"topology\"][\"cycles\"] == 1, s.report[\"text\"]"
       grep -q "^${plugin%%:*}	/usr/lib/.*/meshlab/plugins/${plugin#*:}.so" /tmp/plugins.txt \
         || { cat /tmp/plugins.txt; fail "MeshLab did not load ${plugin#*:}"; }
     done
-    xvfb-run -a meshlab-run -i /tmp/torus.xyz -s "$script" >/tmp/meshlab.log 2>&1 || { tail -40 /tmp/meshlab.log; fail "meshlab-run"; }
+    xvfb-run -a meshlab-run -i /tmp/torus.ply -s "$script" >/tmp/meshlab.log 2>&1 || { tail -40 /tmp/meshlab.log; fail "meshlab-run"; }
   fi
   # The script writes the skeleton beside its input.
   python3 -c "
