@@ -10,6 +10,7 @@
 #include <pcskeleton/io/mesh_io.h>
 #include <pcskeleton/io/point_cloud_io.h>
 #include <pcskeleton/io/skeleton_io.h>
+#include <pcskeleton/version.h>
 
 #include "batch.h"
 

@@ -2,6 +2,8 @@
 
 #include "edit_skeleton.h"
 
+#include <meshlab_layers/meshlab_terms.h>
+
 #include <QPainter>
 
 namespace {
@@ -39,7 +41,12 @@ pcskeleton::meshlab::EditToolBase* EditSkeletonFactory::makeTool(const QAction* 
 }
 
 #if PCSKELETON_MESHLAB_2021_API
-QString EditSkeletonFactory::getEditToolDescription(const QAction*) { return pcskeleton::edit::EditSkeletonTool::info(); }
+QString EditSkeletonFactory::vendor() const { return pcskeleton::meshlab::pluginVendor(); }
+QString EditSkeletonFactory::getEditToolDescription(const QAction*) { return description(); }
 #else
-QString EditSkeletonFactory::getEditToolDescription(QAction*) { return pcskeleton::edit::EditSkeletonTool::info(); }
+QString EditSkeletonFactory::getEditToolDescription(QAction*) { return description(); }
 #endif
+
+QString EditSkeletonFactory::description() const {
+    return pcskeleton::meshlab::withVersion(pcskeleton::edit::EditSkeletonTool::info());
+}

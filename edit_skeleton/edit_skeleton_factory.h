@@ -22,6 +22,7 @@ public:
     // MeshLab's entry points, renamed in 2021.05.
 #if PCSKELETON_MESHLAB_2021_API
     QString pluginName() const override { return "EditSkeleton"; }
+    QString vendor() const override;
     EditTool* getEditTool(const QAction* action) override { return makeTool(action); }
     QString getEditToolDescription(const QAction*) override;
 #else
@@ -31,6 +32,7 @@ public:
 #endif
 
 private:
+    QString description() const;  // the tool's description with the version
     pcskeleton::meshlab::EditToolBase* makeTool(const QAction* action) const;
 
     QAction* editSkeleton_;

@@ -197,6 +197,10 @@ FilterPCSkeletonPlugin::FilterPCSkeletonPlugin() {
 
 QString FilterPCSkeletonPlugin::pluginName() const { return "FilterPCSkeleton"; }
 
+#if PCSKELETON_MESHLAB_2021_API
+QString FilterPCSkeletonPlugin::vendor() const { return pluginVendor(); }
+#endif
+
 QString FilterPCSkeletonPlugin::filterName(int filter) const {
     switch (filter) {
         case FP_CONTRACT_POINT_CLOUD: return "Contract Point Cloud (Laplacian)";
@@ -213,7 +217,9 @@ QString FilterPCSkeletonPlugin::filterName(int filter) const {
     return {};
 }
 
-QString FilterPCSkeletonPlugin::filterInfo(int filter) const {
+QString FilterPCSkeletonPlugin::filterInfo(int filter) const { return withVersion(description(filter)); }
+
+QString FilterPCSkeletonPlugin::description(int filter) const {
     switch (filter) {
         case FP_CONTRACT_POINT_CLOUD:
             return QString(

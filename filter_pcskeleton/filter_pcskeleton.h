@@ -42,6 +42,9 @@ public:
     QString pluginName() const override;
     QString filterName(int filter) const override;
     QString filterInfo(int filter) const override;
+#if PCSKELETON_MESHLAB_2021_API
+    QString vendor() const override;
+#endif
 
     // MeshLab's entry points, whose signatures changed in 2021.05: each forwards to the
     // version-neutral member of the same purpose.
@@ -69,6 +72,7 @@ public:
 #endif
 
 private:
+    QString description(int filter) const;  // filterInfo without the version line
     FilterClass filterClass(int filter) const;
     int changesOf(int filter) const;  // MeshLab's post-condition mask
     bool takesTwoLayers(int filter) const;

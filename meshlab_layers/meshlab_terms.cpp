@@ -1,6 +1,7 @@
 #include "meshlab_terms.h"
 
 #include <pcskeleton/core/parameter_table.h>
+#include <pcskeleton/version.h>
 
 namespace pcskeleton::meshlab {
 
@@ -56,6 +57,10 @@ const Terms& editorTerms() {
     static const Terms terms{quotedLabel, editorStep};
     return terms;
 }
+
+QString pluginVendor() { return QStringLiteral("pcskeleton " PCSKELETON_VERSION); }
+
+QString withVersion(const QString& description) { return description + "<br><br>" + pluginVendor(); }
 
 QString describeForMeshLab(const Problem& problem, const Terms& terms) {
     return QString::fromStdString(describe(problem, terms));

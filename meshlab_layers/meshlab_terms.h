@@ -17,6 +17,13 @@ const Terms& filterTerms();
 // For the Edit Skeleton tool's panel: the hand edits are its own keys.
 const Terms& editorTerms();
 
+// "pcskeleton 0.1.0": the plugins' vendor column in Help > Plugin Info (MeshLab 2021+).
+QString pluginVendor();
+
+// A filter's or tool's description with the version on a line of its own under it:
+// MeshLab 2020.09's Help > Plugin Info shows the descriptions and nothing else.
+QString withVersion(const QString& description);
+
 // The problem worded for MeshLab, as a QString.
 QString describeForMeshLab(const Problem& problem, const Terms& terms = filterTerms());
 

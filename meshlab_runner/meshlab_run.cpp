@@ -43,7 +43,8 @@ const char* const kUsage =
     "      (face ...), wc wn wt (wedge ...), mp (polygons), sa (ASCII instead of binary)\n"
     "  -p  also load the plugins in this folder (MeshLab's own and its per-user plugin folder\n"
     "      are always loaded)\n"
-    "  --list-plugins  list the plugins loaded (and any MeshLab refused, with its reason)\n"
+    "  --list-plugins  list the plugins loaded: name, file and vendor (as Help > Plugin Info),\n"
+    "                  and any MeshLab refused, with its reason\n"
     "In a script, a layer parameter's value is a layer number, as with meshlabserver.\n";
 
 struct Output {
@@ -256,8 +257,8 @@ void loadPlugins(PluginManager& plugins, const QStringList& extraDirs) {
 
 void listPlugins(const PluginManager& plugins) {
     for (const MeshLabPlugin* plugin : plugins.pluginIterator()) {
-        std::printf("%s\t%s\n", qUtf8Printable(plugin->pluginName()),
-                    qUtf8Printable(plugin->pluginFileInfo().absoluteFilePath()));
+        std::printf("%s\t%s\t%s\n", qUtf8Printable(plugin->pluginName()),
+                    qUtf8Printable(plugin->pluginFileInfo().absoluteFilePath()), qUtf8Printable(plugin->vendor()));
     }
     std::printf("%d filter plugins\n", int(std::distance(plugins.filterPluginIterator().begin(),
                                                     plugins.filterPluginIterator().end())));

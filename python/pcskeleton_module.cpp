@@ -11,6 +11,7 @@
 #include <pcskeleton/io/skeleton_io.h>
 #include <pcskeleton/reconstruction/skeleton_reconstruction.h>
 #include <pcskeleton/skeleton/skeleton_branches.h>
+#include <pcskeleton/version.h>
 
 #include <malloc.h>
 #include <omp.h>

@@ -97,6 +97,8 @@ assert s.report[\"topology\"][\"cycles\"] == 1, s.report[\"text\"]"
     for plugin in FilterPCSkeleton:libfilter_pcskeleton EditSkeleton:libedit_skeleton; do
       grep -q "^${plugin%%:*}	/usr/lib/.*/meshlab/plugins/${plugin#*:}.so" /tmp/plugins.txt \
         || { cat /tmp/plugins.txt; fail "MeshLab did not load ${plugin#*:}"; }
+      grep -q "^${plugin%%:*}	.*	pcskeleton ${version%-*}\$" /tmp/plugins.txt \
+        || { cat /tmp/plugins.txt; fail "${plugin%%:*}'"'"'s vendor in Plugin Info is not pcskeleton ${version%-*}"; }
     done
     xvfb-run -a meshlab-run -i /tmp/torus.ply -s "$script" >/tmp/meshlab.log 2>&1 || { tail -40 /tmp/meshlab.log; fail "meshlab-run"; }
   fi
@@ -109,7 +111,7 @@ assert s.topology[\"cycles\"] == 1, s.topology" || { tail -30 /tmp/meshlab.log; 
   step "a C++ program with find_package(pcskeleton)"
   cmake -S /tmp/cxx -B /tmp/cxx-build -DCMAKE_BUILD_TYPE=Release >/tmp/cxx.log 2>&1 && cmake --build /tmp/cxx-build >>/tmp/cxx.log 2>&1 \
     || { cat /tmp/cxx.log; fail "the C++ program"; }
-  [ "$(/tmp/cxx-build/torus_skeleton)" = "cycles 1" ] || fail "the C++ program: $(/tmp/cxx-build/torus_skeleton)"
+  [ "$(/tmp/cxx-build/torus_skeleton)" = "pcskeleton ${version%-*}: cycles 1" ] || fail "the C++ program: $(/tmp/cxx-build/torus_skeleton)"
 
   step "apt-get purge leaves nothing of ours"
   apt-get purge -y -qq $ours >/tmp/purge.log 2>&1 || { cat /tmp/purge.log; fail "apt-get purge"; }

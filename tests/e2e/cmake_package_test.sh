@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # The C++ package: `cmake --install BUILD --component dev` into a scratch prefix, then a
 # user's project (tests/package) finds it with find_package(pcskeleton), builds against
-# its headers and library alone (not the source tree) and gets a torus's one cycle.
-# usage: cmake_package_test.sh BUILD_DIR SOURCE_DIR WORKDIR
+# its headers and library alone (not the source tree) and gets a torus's one cycle and the
+# version from the installed <pcskeleton/version.h>.
+# usage: cmake_package_test.sh BUILD_DIR SOURCE_DIR WORKDIR VERSION
 set -euo pipefail
-BUILD="$1"; SRC="$2"; WORK="$3"
+BUILD="$1"; SRC="$2"; WORK="$3"; VERSION="$4"
 fail() { echo "FAIL: $*"; exit 1; }
 rm -rf "$WORK"; mkdir -p "$WORK"
 cmake --install "$BUILD" --prefix "$WORK/prefix" --component dev >"$WORK/install.log"
@@ -20,7 +21,7 @@ cmake --build "$WORK/consumer" >"$WORK/build.log" 2>&1 || { cat "$WORK/build.log
 # It was built from the installed headers, not from the source tree.
 grep -rq "$SRC/vcg_ext" "$WORK/consumer/CMakeFiles" && fail "the user's program saw the source tree"
 out="$("$WORK/consumer/torus_skeleton")"
-[ "$out" = "cycles 1" ] || fail "the torus gave '$out', not 'cycles 1'"
+[ "$out" = "pcskeleton $VERSION: cycles 1" ] || fail "the program said '$out', not 'pcskeleton $VERSION: cycles 1'"
 # A version the package does not have is refused.
 cat >"$WORK/wrong_version.cmake" <<CMAKE
 set(CMAKE_PREFIX_PATH "$WORK/prefix")

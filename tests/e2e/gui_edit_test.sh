@@ -121,14 +121,9 @@ wait_screen 120 reconstructed "no reconstructed surface appeared in the view" su
 click "${FILTERS[@]}"; click "${POINT_SET[@]}"; click "${EXPORT_ITEM[@]}" 1.5
 wait_window "Export Skeleton" 10
 shot export-dialog
-if [[ "$VERSION" == 2020.* ]]; then
-  click 216 293 2      # Apply
-  click 76 293         # Close
-else  # the dialog's bottom row: Close at a quarter of its width, Apply at three quarters
-  eval "$(xdotool search --onlyvisible --name "Export Skeleton" getwindowgeometry --shell | tr -d ' ')"
-  click $((X + WIDTH * 3 / 4)) $((Y + HEIGHT - 21)) 2
-  click $((X + WIDTH / 4)) $((Y + HEIGHT - 21))
-fi
+dialog_buttons "Export Skeleton"
+click "${APPLY[@]}" 2
+click "${CLOSE[@]}"
 SAVED="$WORK/ring_1.ply"  # the default never replaces the file the skeleton came from
 wait_file "$SAVED" 20 "the edited skeleton was not saved to $SAVED"
 cmp -s "$SAVED" ring.ply && fail "the saved skeleton is the original"

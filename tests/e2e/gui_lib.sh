@@ -65,3 +65,13 @@ place_window() {  # window, width, height
   wait_until 30 "the window did not stay at 0,0 with size $2x$3" window_placed "$@"
 }
 click() { xdotool mousemove "$1" "$2" click 1; sleep "${3:-0.8}"; }
+# A filter dialog's bottom row, from the window's geometry (a new parameter or a longer
+# description moves it): sets APPLY and CLOSE (Close at a quarter of its width, Apply at
+# three quarters) and DIALOG_WIDTH, DIALOG_HEIGHT.
+dialog_buttons() {  # window name
+  local X Y WIDTH HEIGHT SCREEN WINDOW
+  eval "$(xdotool search --onlyvisible --name "$1" getwindowgeometry --shell | tr -d ' ')"
+  APPLY=($((X + WIDTH * 3 / 4)) $((Y + HEIGHT - 21)))
+  CLOSE=($((X + WIDTH / 4)) $((Y + HEIGHT - 21)))
+  DIALOG_WIDTH=$WIDTH; DIALOG_HEIGHT=$HEIGHT
+}

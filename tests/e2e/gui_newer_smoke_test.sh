@@ -46,16 +46,15 @@ shot point-set-menu
 click "${SKELETON_ITEM[@]}" 1.5
 wait_window "Compute Curve Skeleton" 10
 shot skeleton-dialog
-# The dialog's buttons, from its geometry: Close and Apply share the bottom row.
-eval "$(xdotool search --onlyvisible --name "Compute Curve Skeleton" getwindowgeometry --shell | tr -d ' ')"
+dialog_buttons "Compute Curve Skeleton"
 # The dialog fits a 1024-pixel-high screen with room for a title bar and a panel. Qt
 # shrinks a taller dialog to the screen (its last fields cut off), so a height at the
 # screen's is a dialog that does not fit.
-echo "the skeleton dialog: ${WIDTH}x${HEIGHT} at $X,$Y"
-[ "$HEIGHT" -le 960 ] || fail "the skeleton dialog is $HEIGHT pixels high: it does not fit a 1024-pixel screen"
-click $((X + WIDTH * 3 / 4)) $((Y + HEIGHT - 21)) 6   # Apply
+echo "the skeleton dialog: ${DIALOG_WIDTH}x${DIALOG_HEIGHT}"
+[ "$DIALOG_HEIGHT" -le 960 ] || fail "the skeleton dialog is $DIALOG_HEIGHT pixels high: it does not fit a 1024-pixel screen"
+click "${APPLY[@]}" 6
 shot skeleton-applied
-click $((X + WIDTH / 4)) $((Y + HEIGHT - 21))         # Close
+click "${CLOSE[@]}"
 
 click "${EDIT_MENU[@]}"
 shot edit-menu

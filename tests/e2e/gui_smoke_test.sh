@@ -33,11 +33,9 @@ shot point-set-menu
 click 640 486 1.5     # Contract Point Cloud (Laplacian)
 wait_window "Contract Point Cloud \(Laplacian\)" 10
 shot filter-dialog
-# The dialog's buttons, from its geometry (a new parameter moves them down): Close and
-# Apply share the bottom row.
-eval "$(xdotool search --onlyvisible --name "Contract Point Cloud" getwindowgeometry --shell | tr -d ' ')"
-click $((X + WIDTH * 3 / 4)) $((Y + HEIGHT - 21)) 4   # Apply
-click $((X + WIDTH / 4)) $((Y + HEIGHT - 21))         # Close
+dialog_buttons "Contract Point Cloud"
+click "${APPLY[@]}" 4
+click "${CLOSE[@]}"
 click 472 114         # hide the input layer, to see the result
 click 540 145         # make the contracted layer current
 shot contracted-layer
@@ -75,22 +73,23 @@ click 160 386         # Point Set
 click 640 436 1.5     # Compute Curve Skeleton (Laplacian Contraction)
 wait_window "Compute Curve Skeleton" 10
 shot skeleton-dialog
-eval "$(xdotool search --onlyvisible --name "Compute Curve Skeleton" getwindowgeometry --shell | tr -d ' ')"
+dialog_buttons "Compute Curve Skeleton"
 # The dialog fits a 1024-pixel-high screen with room for a title bar and a panel. Qt
 # shrinks a taller dialog to the screen (its last fields cut off), so a height at the
 # screen's is a dialog that does not fit.
-echo "the skeleton dialog: ${WIDTH}x${HEIGHT} at $X,$Y"
-[ "$HEIGHT" -le 960 ] || fail "the skeleton dialog is $HEIGHT pixels high: it does not fit a 1024-pixel screen"
-click $((X + WIDTH * 3 / 4)) $((Y + HEIGHT - 21)) 5   # Apply
-click $((X + WIDTH / 4)) $((Y + HEIGHT - 21))         # Close
+echo "the skeleton dialog: ${DIALOG_WIDTH}x${DIALOG_HEIGHT}"
+[ "$DIALOG_HEIGHT" -le 960 ] || fail "the skeleton dialog is $DIALOG_HEIGHT pixels high: it does not fit a 1024-pixel screen"
+click "${APPLY[@]}" 5
+click "${CLOSE[@]}"
 shot skeleton-layer
 click 120 10          # Filters
 click 160 386         # Point Set
 click 640 536 1.5     # Export Skeleton (PLY with edges, OBJ, CG)
 wait_window "Export Skeleton" 10
 shot export-dialog
-click 216 293 2       # Apply: the default file is next to the input, named after the layer
-click 76 293          # Close
+dialog_buttons "Export Skeleton"
+click "${APPLY[@]}" 2  # the default file is next to the input, named after the layer
+click "${CLOSE[@]}"
 GUI_SKELETON="$WORK/data/meshes/elephant_skeleton.ply"
 wait_file "$GUI_SKELETON" 30 "Export Skeleton did not write $GUI_SKELETON"
 shot skeleton-exported

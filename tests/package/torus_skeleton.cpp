@@ -1,5 +1,6 @@
 // The skeleton of points on a torus: one cycle.
 #include <pcskeleton/curve_skeleton.h>
+#include <pcskeleton/version.h>
 
 #include <cmath>
 #include <iostream>
@@ -13,5 +14,5 @@ int main() {
         }
     }
     const pcskeleton::SkeletonResult result = pcskeleton::computeCurveSkeleton(points);
-    std::cout << "cycles " << pcskeleton::analyseTopology(result.skeleton).cycles << "\n";
+    std::cout << "pcskeleton " PCSKELETON_VERSION ": cycles " << pcskeleton::analyseTopology(result.skeleton).cycles << "\n";
 }

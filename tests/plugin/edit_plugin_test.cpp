@@ -4,6 +4,8 @@
 
 #include <common/interfaces.h>
 
+#include <pcskeleton/version.h>
+
 #include <QApplication>
 #include <QPluginLoader>
 
@@ -68,6 +70,7 @@ TEST(EditPlugin, LoadsAsMeshLabDoesAndOffersTheSkeletonTool) {
     EXPECT_TRUE(tool->isCheckable());
     EXPECT_FALSE(tool->icon().isNull());
     EXPECT_NE(factory->getEditToolDescription(tool).indexOf("undo"), -1);
+    EXPECT_TRUE(factory->getEditToolDescription(tool).endsWith("pcskeleton " PCSKELETON_VERSION));
     MeshEditInterface* editor = factory->getMeshEditInterface(tool);
     ASSERT_NE(editor, nullptr);
     delete editor;

@@ -3,6 +3,8 @@
 
 #include "support/sampled_shapes.h"
 
+#include <pcskeleton/version.h>
+
 #include <QCoreApplication>
 
 #include <cmath>
@@ -26,6 +28,15 @@ TEST_F(FilterPluginTest, DeclaresAPointSetFilterThatMeshLabAccepts) {
     }
     EXPECT_FLOAT_EQ(parameters.getFloat("contractionScale"), 3.0f);
     EXPECT_EQ(parameters.getInt("maxIterations"), 20);
+}
+
+// MeshLab 2020.09's Help > Plugin Info shows each filter's description and nothing else.
+TEST_F(FilterPluginTest, EveryFilterDescriptionEndsWithTheVersion) {
+    ASSERT_GE(plugin->actions().size(), 10);
+    for (QAction* filter : plugin->actions()) {
+        EXPECT_TRUE(plugin->filterInfo(filter).endsWith("<br><br>pcskeleton " PCSKELETON_VERSION))
+            << filter->text().toStdString();
+    }
 }
 
 TEST_F(FilterPluginTest, ContractsATorusIntoANewLayerLeavingTheInputAlone) {
