@@ -69,6 +69,18 @@ TEST(NodeRecentering, ACurledSheetWhoseCurlChangesStaysOnTheSheet) {
     EXPECT_EQ(recentreOneSidedNodes(t, tube, DataSupport(tube, 1.0)).recentredNodes, 3);
 }
 
+TEST(NodeRecentering, TwoCirclesThatAgreeByChanceOnACurledSheetDoNotMoveTheNode) {
+    // The curl tightens unevenly (as the tobacco leaf's tip): the last two circles agree,
+    // but the middle one disagrees with the first, so it is no tube to confirm the last.
+    PointList points;
+    SkeletonGraph g = nodesOfAnArc(2.0, points, {0.2, 0.3, 0.34});
+    const SkeletonGraph before = g;
+    const RecenteringReport report = recentreOneSidedNodes(g, points, DataSupport(points, 1.0));
+    EXPECT_EQ(report.recentredNodes, 0);
+    EXPECT_EQ(report.unlikeNeighbours, 3);
+    EXPECT_EQ(g.nodes, before.nodes);
+}
+
 TEST(NodeRecentering, AWallNodeNoNeighbourConfirmsStays) {
     // One node of arc points between two ends with no points of their own: nothing around
     // it shows a tube, so its circle's centre is a guess and it stays.

@@ -98,19 +98,25 @@ RecenteringReport recentreOneSidedNodes(SkeletonGraph& skeleton, const PointList
     const std::vector<std::vector<int>> members = pointsOfNodes(skeleton);
     std::vector<CrossSection> sections(count);
     for (std::size_t n = 0; n < count; ++n) sections[n] = crossSection(int(n), skeleton, adjacent[n], members[n], points);
-    // A wall node is confirmed by a neighbour that is a tube too (its circle agrees, or its
-    // points surround it), and contradicted by one whose circle disagrees.
+    // A wall node is contradicted by a neighbouring wall whose circle disagrees, and confirmed
+    // by a neighbour that is a tube too: its points surround it, or its circle agrees and is
+    // not contradicted itself. Along a curled sheet the circles drift from node to node, so
+    // two of them may agree by chance, but not a whole stretch.
+    const auto contradicted = [&](std::size_t n) {
+        for (int m : adjacent[n]) {
+            if (sections[m].kind == CrossSection::kWall && !circlesAgree(sections[n].radius, sections[m].radius))
+                return true;
+        }
+        return false;
+    };
     const auto confirmedByNeighbours = [&](std::size_t n) {
-        bool confirmed = false;
+        if (contradicted(n)) return false;
         for (int m : adjacent[n]) {
             const CrossSection& neighbour = sections[m];
-            if (neighbour.kind == CrossSection::kWall) {
-                if (!circlesAgree(sections[n].radius, neighbour.radius)) return false;
-                confirmed = true;
-            }
-            if (neighbour.kind == CrossSection::kSurrounded) confirmed = true;
+            if (neighbour.kind == CrossSection::kSurrounded) return true;
+            if (neighbour.kind == CrossSection::kWall && !contradicted(std::size_t(m))) return true;
         }
-        return confirmed;
+        return false;
     };
     double shifts = 0.0;
     for (std::size_t n = 0; n < count; ++n) {
