@@ -31,6 +31,18 @@ SkeletonGraph nodesOfAnArc(double sweep, PointList& points, const std::vector<do
     return g;
 }
 
+// Three nodes on arcs of a third of a circle with the given radii, each alone a tube's
+// wall: none moves, all three are counted as left in place for their neighbours.
+void expectCurledSheetLeftInPlace(const std::vector<double>& radii) {
+    PointList points;
+    SkeletonGraph g = nodesOfAnArc(2.0, points, radii);
+    const SkeletonGraph before = g;
+    const RecenteringReport report = recentreOneSidedNodes(g, points, DataSupport(points, 1.0));
+    EXPECT_EQ(report.recentredNodes, 0);
+    EXPECT_EQ(report.unlikeNeighbours, 3);
+    EXPECT_EQ(g.nodes, before.nodes);
+}
+
 TEST(NodeRecentering, NodesOfAHalfTubeMoveOntoItsAxisWithItsRadius) {
     PointList points;
     SkeletonGraph g = nodesOfAnArc(M_PI, points);
@@ -55,13 +67,7 @@ TEST(NodeRecentering, NodesSurroundedByTheirPointsStay) {
 TEST(NodeRecentering, ACurledSheetWhoseCurlChangesStaysOnTheSheet) {
     // A leaf curled across its width, a third of a circle, more tightly from node to node:
     // each cross-section alone looks like a tube's wall, the circles of neighbours disagree.
-    PointList points;
-    SkeletonGraph g = nodesOfAnArc(2.0, points, {0.2, 0.3, 0.45});
-    const SkeletonGraph before = g;
-    const RecenteringReport report = recentreOneSidedNodes(g, points, DataSupport(points, 1.0));
-    EXPECT_EQ(report.recentredNodes, 0);
-    EXPECT_EQ(report.unlikeNeighbours, 3);
-    EXPECT_EQ(g.nodes, before.nodes);
+    expectCurledSheetLeftInPlace({0.2, 0.3, 0.45});
 
     // The same arcs with one radius are a tube seen from one side: all three move.
     PointList tube;
@@ -72,13 +78,7 @@ TEST(NodeRecentering, ACurledSheetWhoseCurlChangesStaysOnTheSheet) {
 TEST(NodeRecentering, TwoCirclesThatAgreeByChanceOnACurledSheetDoNotMoveTheNode) {
     // The curl tightens unevenly (as the tobacco leaf's tip): the last two circles agree,
     // but the middle one disagrees with the first, so it is no tube to confirm the last.
-    PointList points;
-    SkeletonGraph g = nodesOfAnArc(2.0, points, {0.2, 0.3, 0.34});
-    const SkeletonGraph before = g;
-    const RecenteringReport report = recentreOneSidedNodes(g, points, DataSupport(points, 1.0));
-    EXPECT_EQ(report.recentredNodes, 0);
-    EXPECT_EQ(report.unlikeNeighbours, 3);
-    EXPECT_EQ(g.nodes, before.nodes);
+    expectCurledSheetLeftInPlace({0.2, 0.3, 0.34});
 }
 
 TEST(NodeRecentering, AWallNodeNoNeighbourConfirmsStays) {
