@@ -2,9 +2,16 @@
 #include <pcskeleton/contraction/one_ring.h>
 #include "support/sampled_shapes.h"
 
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <random>
+#include <set>
+#include <utility>
+#include <vector>
 
 using namespace pcskeleton;
 
@@ -52,5 +59,39 @@ TEST(OneRing, FanTrianglesAreMadeOfRingNeighbours) {
             EXPECT_TRUE(inRing(rings, int(i), (*t)[1]));
             EXPECT_NE((*t)[0], (*t)[1]);
         }
+    }
+}
+
+// With every other point as a neighbour, a flat cloud's local triangulations are pieces of
+// one: each point's fan is its star in the Delaunay triangulation of the whole cloud.
+TEST(OneRing, EachFanIsThePointsStarInTheDelaunayTriangulationOfAFlatCloud) {
+    using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+    using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<int, Kernel>;
+    using Delaunay = CGAL::Delaunay_triangulation_2<Kernel, CGAL::Triangulation_data_structure_2<VertexBase>>;
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> coordinate(-1.0, 1.0);
+    PointList points;
+    std::vector<std::pair<Kernel::Point_2, int>> planar;
+    for (int i = 0; i < 300; ++i) {
+        const double x = coordinate(random), y = coordinate(random);
+        points.emplace_back(x, y, 0.0);
+        planar.emplace_back(Kernel::Point_2(x, y), i);
+    }
+    const Delaunay delaunay(planar.begin(), planar.end());
+    const OneRings rings = OneRings::compute(points, int(points.size()) - 1);
+
+    using Triangle = std::pair<int, int>;  // the two other corners, smaller first
+    auto unordered = [](int a, int b) { return Triangle(std::min(a, b), std::max(a, b)); };
+    for (Delaunay::Vertex_handle v : delaunay.finite_vertex_handles()) {
+        const int i = v->info();
+        std::set<Triangle> expected, found;
+        Delaunay::Face_circulator face = delaunay.incident_faces(v), end = face;
+        do {
+            if (delaunay.is_infinite(face)) continue;
+            const int c = face->index(v);
+            expected.insert(unordered(face->vertex(Delaunay::ccw(c))->info(), face->vertex(Delaunay::cw(c))->info()));
+        } while (++face != end);
+        for (auto t = rings.fanBegin(i); t != rings.fanEnd(i); ++t) found.insert(unordered((*t)[0], (*t)[1]));
+        EXPECT_EQ(found, expected) << "point " << i;
     }
 }
