@@ -1,5 +1,7 @@
 #include "pcskeleton/contraction/point_cloud_input.h"
 
+#include "pcskeleton/internal/parallel_sort.h"
+
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
@@ -103,7 +105,8 @@ ExactDuplicates findExactDuplicates(const PointList& points) {
     std::vector<std::pair<std::uint64_t, int>> keyed(n);
 #pragma omp parallel for schedule(static)
     for (long i = 0; i < long(n); ++i) keyed[std::size_t(i)] = {exactHash(points[std::size_t(i)]), int(i)};
-    std::sort(keyed.begin(), keyed.end());  // by hash, then index: the same on every run
+    // By hash, then index: the same on every run and any number of threads.
+    parallelSort(keyed.begin(), keyed.end());
 
     ExactDuplicates duplicates;
     std::vector<int> distinctInRun;  // the first member of each distinct point of a run

@@ -1,5 +1,7 @@
 #include "pcskeleton/internal/spatial_index.h"
 
+#include "pcskeleton/internal/parallel_sort.h"
+
 #include <CGAL/Fuzzy_sphere.h>
 #include <CGAL/Kd_tree.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>
@@ -57,7 +59,8 @@ std::vector<std::size_t> zOrder(const PointList& points) {
         for (int axis = 0; axis < 3; ++axis) code |= spreadBits(std::uint64_t(cell[axis])) << axis;
         coded[i] = {code, i};
     }
-    std::sort(coded.begin(), coded.end());
+    // (code, index) pairs are distinct: the order is the same on any number of threads.
+    parallelSort(coded.begin(), coded.end());
     std::vector<std::size_t> order(points.size());
     for (std::size_t r = 0; r < order.size(); ++r) order[r] = coded[r].second;
     return order;
@@ -100,10 +103,20 @@ void PointIndex::withinRadius(const Point& centre, double radius, std::vector<in
 }
 
 void PointIndex::nearest(const Point& centre, int k, std::vector<int>& found) const {
+    nearestRanks(centre, k, found);
+    for (int& f : found) f = int(tree_->order[std::size_t(f)]);
+}
+
+void PointIndex::nearestRanks(const Point& centre, int k, std::vector<int>& found) const {
     found.clear();
     const NeighbourSearch search(tree_->tree, toCgal(centre), unsigned(k), 0.0, true,
                                  NeighbourSearch::Distance(tree_->pointMap));
-    for (const auto& hit : search) found.push_back(int(tree_->order[hit.first]));
+    for (const auto& hit : search) found.push_back(int(hit.first));
+}
+
+Point PointIndex::pointAtRank(std::size_t rank) const {
+    const Point3& p = tree_->cgalPoints[rank];
+    return Point(p.x(), p.y(), p.z());
 }
 
 }  // namespace pcskeleton
