@@ -1,6 +1,7 @@
 // Benchmark of the whole pipeline as a user runs it: reading a binary PLY file, then the
 // skeleton (multi-resolution subsample, 1-rings, contraction, thinning, embedding,
-// finishing), with time per stage, the skeleton's topology and peak memory per stage, for
+// finishing), with time per stage ('outliers', the outlier detection over the whole cloud,
+// is part of 'subsample'), the skeleton's topology and peak memory per stage, for
 // sampled tori of growing size (the right answer is always one cycle). A stage's peak is
 // the resident set's high-water mark over the stage alone: it is reset (Linux's
 // /proc/self/clear_refs) as each stage starts, the stages told apart by their progress
@@ -35,6 +36,7 @@ constexpr const char* kStageNames[kStages] = {"read", "subsample", "1-rings", "c
 
 struct Row {
     double reading = 0, total = 0;
+    double outliers = 0;  // part of subsampling: outlier detection over the whole cloud
     StageSeconds seconds;
     double stagePeakMegabytes[kStages] = {};
     std::size_t contracted = 0;
@@ -94,8 +96,14 @@ Row runCase(const std::string& file, const SkeletonParameters& parameters) {
     const PointList cloud = readPointCloud(file);
     row.reading = secondsSince(start);
     StagePeaks peaks(row.stagePeakMegabytes);
-    const SkeletonResult result =
-        computeCurveSkeleton(cloud, parameters, [&](int, const char* what) { peaks.enter(stageOf(what)); });
+    // Outlier detection runs from the first multi-resolution message to the one that starts the grid.
+    std::chrono::steady_clock::time_point outliersStart{};
+    const SkeletonResult result = computeCurveSkeleton(cloud, parameters, [&](int, const char* what) {
+        peaks.enter(stageOf(what));
+        const std::string message = what;
+        if (message.rfind("Multi-resolution: outliers", 0) == 0) outliersStart = std::chrono::steady_clock::now();
+        if (message == "Multi-resolution: subsample" && row.outliers == 0) row.outliers = secondsSince(outliersStart);
+    });
     peaks.finish();
     row.total = secondsSince(start);
     row.seconds = result.seconds;
@@ -128,8 +136,8 @@ int main(int argc, char** argv) {
                 "Peak memory (MB): the resident set's highest during each stage; 'peak' is the whole run's.\n",
                 parameters.resolution.maxContractedPoints == 0 ? "full resolution" : "default pipeline",
                 sysconf(_SC_NPROCESSORS_ONLN));
-    std::printf("%9s %8s %7s %7s %8s %8s %6s %6s %5s %8s %6s %6s", "points", "contracted", "read", "subsample",
-                "1-rings", "contract", "thin", "finish", "iters", "total", "nodes", "cycles");
+    std::printf("%9s %8s %7s %7s %8s %8s %8s %6s %6s %5s %8s %6s %6s", "points", "contracted", "read", "subsample",
+                "outliers", "1-rings", "contract", "thin", "finish", "iters", "total", "nodes", "cycles");
     for (const char* stage : kStageNames) std::printf(" %11s", stage);
     std::printf(" %7s\n", "peak");
     if (!resetPeakResident()) std::printf("(this kernel cannot reset the high-water mark: each stage's peak includes the earlier ones')\n");
@@ -149,8 +157,8 @@ int main(int argc, char** argv) {
             std::printf("%9zu  failed\n", n);
         } else {
             const StageSeconds& s = row.seconds;
-            std::printf("%9zu %10zu %6.2fs %8.2fs %7.2fs %7.2fs %5.2fs %5.2fs %5d %7.2fs %6d %6d", n, row.contracted,
-                        row.reading, s.subsampling, s.neighbourhoods, s.contraction, s.thinning + s.embedding,
+            std::printf("%9zu %10zu %6.2fs %8.2fs %7.2fs %7.2fs %7.2fs %5.2fs %5.2fs %5d %7.2fs %6d %6d", n, row.contracted,
+                        row.reading, s.subsampling, row.outliers, s.neighbourhoods, s.contraction, s.thinning + s.embedding,
                         s.finishing, row.iterations, row.total, row.nodes, row.cycles);
             // The child's own maximum would miss the stages before the last reset.
             double wholeRun = 0;
