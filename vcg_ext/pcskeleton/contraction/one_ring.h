@@ -1,8 +1,8 @@
 // Step 1 of the paper (Sec. III-A): each point's 1-ring, computed once on the input.
 //
-// For point i: its k nearest neighbours are projected onto their PCA tangent plane, a
-// 2-D Delaunay triangulation is built, and the triangles around i (its "fan") define i's
-// 1-ring. The fan is kept fixed while the points move; only the Laplacian weights change.
+// For point i: its k nearest neighbours are projected onto their PCA tangent plane, and
+// the triangles around i in the 2-D Delaunay triangulation of i and its neighbours (its
+// "fan") define i's 1-ring. The fan is kept fixed while the points move; only the Laplacian weights change.
 #pragma once
 
 #include "pcskeleton/contraction/point_cloud_input.h"
