@@ -47,7 +47,7 @@ public:
         fan.ring.clear();
         gatherNeighbours(i);
         projectOnTangentPlane(i);
-        triangulate(i, fan);
+        triangulate(fan);
         std::sort(fan.ring.begin(), fan.ring.end());
         fan.ring.erase(std::unique(fan.ring.begin(), fan.ring.end()), fan.ring.end());
     }
@@ -87,7 +87,7 @@ private:
     // and each hull edge between two neighbours is a fan triangle. A hull is a few times
     // cheaper than a Delaunay triangulation of the same points, and the 1-rings are most of
     // a small cloud's time.
-    void triangulate(int i, LocalFan& fan) {
+    void triangulate(LocalFan& fan) {
         inverted_.clear();
         for (const auto& projected : projected_) {
             const Point2& q = projected.first;
@@ -103,7 +103,7 @@ private:
                             HullTraits(CGAL::make_property_map(inverted_)));
         if (hull_.size() < 3) {
             // Every neighbour on one line through the centre: no triangle.
-            triangulateDegenerate(i, fan);
+            triangulateDegenerate(fan);
             return;
         }
         for (std::size_t h = 0; h < hull_.size(); ++h) {
@@ -118,11 +118,11 @@ private:
         }
     }
 
-    void triangulateDegenerate(int i, LocalFan& fan) {
+    void triangulateDegenerate(LocalFan& fan) {
         triangulation_.clear();
-        Delaunay2::Vertex_handle centre = triangulation_.insert(Point2(0, 0));
+        // Only the neighbours' infos are read: the centre's stays unset.
+        const Delaunay2::Vertex_handle centre = triangulation_.insert(Point2(0, 0));
         triangulation_.insert(projected_.begin(), projected_.end());
-        centre->info() = i;
         // Collinear neighbourhood: no triangle, hence no Laplacian weight, but the two
         // neighbours along the line still measure the extent.
         if (triangulation_.dimension() != 1) return;

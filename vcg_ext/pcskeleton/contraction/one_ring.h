@@ -2,7 +2,8 @@
 //
 // For point i: its k nearest neighbours are projected onto their PCA tangent plane, and
 // the triangles around i in the 2-D Delaunay triangulation of i and its neighbours (its
-// "fan") define i's 1-ring. The fan is kept fixed while the points move; only the Laplacian weights change.
+// "fan") define i's 1-ring. The fan is kept fixed while the points move; only the
+// Laplacian weights change.
 #pragma once
 
 #include "pcskeleton/contraction/point_cloud_input.h"
