@@ -13,6 +13,7 @@
 // usage: bench_branches [POINTS]      default 6000 points per shape
 #include <pcskeleton/core/openmp_wait_policy.h>
 #include <pcskeleton/curve_skeleton.h>
+#include <pcskeleton/internal/median.h>
 #include <pcskeleton/skeleton/skeleton_branches.h>
 #include "support/sampled_shapes.h"
 #include "support/scan_simulation.h"
@@ -143,10 +144,11 @@ void measureTaper(double noise, std::size_t n) {
     }
     const SkeletonBranches b = measureBranches(s);
     const double volume = M_PI * 2.0 / 3.0 * (0.15 * 0.15 + 0.15 * 0.05 + 0.05 * 0.05);
-    double measured = 0;
-    for (const Branch& branch : b.branches) measured += branch.volume;
-    std::printf("taper  %-6s radius within 10%% along %5.1f%% of the length; volume %+.1f%% of the cone's\n",
-                noise > 0 ? "1%" : "clean", total > 0 ? 100 * within / total : 0.0, 100 * (measured - volume) / volume);
+    double measured = 0, length = 0;
+    for (const Branch& branch : b.branches) measured += branch.volume, length += branch.length;
+    std::printf("taper  %-6s radius within 10%% along %5.1f%% of the length; volume %+.1f%% of the cone's, length %+.1f%%\n",
+                noise > 0 ? "1%" : "clean", total > 0 ? 100 * within / total : 0.0, 100 * (measured - volume) / volume,
+                100 * (length - 2.0) / 2.0);
 }
 
 // The volume of the union of capsules of radius r around the segments: the tube's shape,
@@ -217,7 +219,8 @@ void measureTree(double noise, std::size_t n) {
 // Curved tubes, held out when the branches' course (fork points, smoothing) was chosen on the
 // Y and the star: a helix of two turns (radius 0.5, rising 1) and a trefoil knot (a loop),
 // tube radius 0.06, 400 segments each. The measured total length against the curve's (and
-// for the helix its two caps).
+// for the helix its two caps), the volume against the tube's, the nodes' median radius
+// against the tube's.
 void measureCurve(bool knot, double noise, std::size_t n) {
     shapes::Polyline curve;
     const auto at = [knot](double s) {
@@ -234,12 +237,16 @@ void measureCurve(bool knot, double noise, std::size_t n) {
     if (noise > 0) points = shapes::withNoise(points, noise);
     const SkeletonResult result = computeCurveSkeleton(points);
     const SkeletonBranches b = measureBranches(result.skeleton);
-    double length = 0, bones = 0;
-    for (const Branch& branch : b.branches) length += branch.length;
+    double length = 0, bones = 0, volume = 0;
+    for (const Branch& branch : b.branches) length += branch.length, volume += branch.volume;
     for (const Edge& e : result.skeleton.edges) bones += (result.skeleton.nodes[e[0]] - result.skeleton.nodes[e[1]]).norm();
-    std::printf("%-7s %-6s total length %+.1f%% (the bones as they lie: %+.1f%%), %zu branch(es)\n", knot ? "trefoil" : "helix",
-                noise > 0 ? "1%" : "clean", 100 * (length - trueLength) / trueLength, 100 * (bones - trueLength) / trueLength,
-                b.branches.size());
+    // The tube's volume: a cylinder along the curve (and for the helix two half-ball caps).
+    const double curveLength = trueLength - (knot ? 0.0 : 2 * kRadius);
+    const double trueVolume = M_PI * kRadius * kRadius * curveLength + (knot ? 0.0 : 4.0 / 3.0 * M_PI * std::pow(kRadius, 3));
+    std::printf("%-7s %-6s total length %+.1f%% (the bones as they lie: %+.1f%%), volume %+.1f%%, median radius %+.1f%%, %zu branch(es)\n",
+                knot ? "trefoil" : "helix", noise > 0 ? "1%" : "clean", 100 * (length - trueLength) / trueLength,
+                100 * (bones - trueLength) / trueLength, 100 * (volume - trueVolume) / trueVolume,
+                100 * (median(result.skeleton.radii) - kRadius) / kRadius, b.branches.size());
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "pcskeleton/curve_skeleton.h"
 
+#include "pcskeleton/finishing/bone_radii.h"
 #include "pcskeleton/finishing/node_recentering.h"
 #include "pcskeleton/finishing/gap_bridging.h"
 #include "pcskeleton/finishing/skeleton_refinement.h"
@@ -70,6 +71,10 @@ void thinAndEmbed(const NormalizedCloud& cloud, const OneRings& rings, const Poi
             result.quality.contactLoops.push_back(std::move(loop.cycle));
         }
     }
+    // Last, once the bones lie where they stay: each is measured across its own direction.
+    // After the quality check, whose test for points that did not contract compares their
+    // distance with the spread of each node's points, the radius the embedding gives.
+    measureBoneRadii(result.skeleton, points, nodeSpacing);
     result.quality.nodesAwayFromData = support.unsupportedNodes(result.skeleton);
     // A re-centred node is off its points' centre by design, not outside the shape.
     std::vector<int>& outside = result.quality.nodesOutside;
@@ -183,11 +188,13 @@ void ContractionInput::carryToAllPoints(SkeletonResult& result) const {
         const int keeper = subsample_.keeperOf[i];
         skeleton.pointNode[i] = keeper < 0 ? -1 : keptNode[keeper];
     }
-    // Radii from every point, as the embedding measures them; a node without points (or
-    // with only one, at its own place) keeps the radius it has.
+    // Radii from every point, as the embedding and the finishing measure them; a node
+    // without points (or with only one, at its own place) keeps the radius it has.
     const std::vector<double> radius = meanDistanceToNodes(input_, skeleton.pointNode, skeleton.nodes);
+    const std::vector<double> boneRadius = boneRadii(skeleton, input_, result.quality.nodeSpacing);
     for (std::size_t n = 0; n < skeleton.nodeCount(); ++n) {
-        if (radius[n] > 0) skeleton.radii[n] = radius[n];
+        if (boneRadius[n] > 0) skeleton.radii[n] = boneRadius[n];
+        else if (radius[n] > 0) skeleton.radii[n] = radius[n];
     }
     PointList& contracted = result.contraction.contracted;
     if (!contracted.empty()) {

@@ -16,7 +16,10 @@ using Edge = std::array<int, 2>;  // node indices, smaller first
 struct SkeletonGraph {
     PointList nodes;              // input frame
     std::vector<Edge> edges;      // sorted, no duplicates, no self-loops
-    std::vector<double> radii;    // per node: mean distance to its corresponding input points
+    // Per node: the radius of the tube around it. Along a bone, measured across the bone
+    // with noise taken out (finishing/bone_radii.h); at tips, junctions and where the
+    // points are no tube's wall, the mean distance to its corresponding input points.
+    std::vector<double> radii;
     std::vector<int> pointNode;   // per input point: the node it belongs to (-1 = none)
     // Bones the data does not show but the skeleton infers (a gap in a scan bridged): a
     // sorted subset of `edges`, so that a user sees what was guessed.
