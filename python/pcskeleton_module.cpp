@@ -411,6 +411,13 @@ py::dict branchesDict(const SkeletonBranches& b) {
     py::list nodes;
     for (const Branch& x : t) nodes.append(columnOf<int>(x.nodes, [](int n) { return n; }));
     d["nodes"] = nodes;
+    py::list along, radii;
+    for (const Branch& x : t) {
+        along.append(columnOf<double>(x.along, [](double v) { return v; }));
+        radii.append(columnOf<double>(x.radii, [](double v) { return v; }));
+    }
+    d["profile_along"] = along;
+    d["profile_radius"] = radii;
     d["node_branch"] = columnOf<int>(b.nodeBranch, [](int n) { return n; });
     d["point_branch"] = columnOf<int>(b.pointBranch, [](int n) { return n; });
     d["point_position"] = columnOf<double>(b.pointPosition, [](double x) { return x; });

@@ -351,6 +351,11 @@ def test_branches_of_a_fork_have_their_lengths_orders_and_angles():
     assert branches.angle_to_parent[long_arm] == pytest.approx(45.0)
     assert np.isnan(branches.angle_to_parent[0])
     assert list(branches.nodes[long_arm]) == [fork] + list(range(fork + 1, long_tip + 1))
+    # The radius profile: one place and radius per node, from 0 at the base to the length.
+    assert len(branches.profile_along[long_arm]) == len(branches.nodes[long_arm])
+    assert branches.profile_along[long_arm][0] == 0.0
+    assert branches.profile_along[long_arm][-1] == pytest.approx(branches.length[long_arm])
+    assert np.allclose(branches.profile_radius[long_arm], 0.05)
     assert skeleton.branch_of(long_tip) == long_arm and skeleton.branch_of(fork) == 0
     from_tip = skeleton.measure_branches(up=(0, 0, -1))
     assert from_tip.base_node[0] == long_tip

@@ -42,11 +42,13 @@ TEST(BranchIo, TheCsvTableHasAHeaderAndOneRowPerBranch) {
     const std::string text = contents(path);
     EXPECT_EQ(text.substr(0, text.find('\n')),
               "branch,parent,order,base_node,tip_node,nodes,length,chord,base_radius,tip_radius,mean_radius,volume,"
-              "angle_to_parent,points,closes_loop,part");
+              "angle_to_parent,points,closes_loop,part,profile_along,profile_radius");
     EXPECT_NE(text.find("\n0,-1,1,0,2,3,1,1,0.20000000000000001,0.14999999999999999,"), std::string::npos) << text;
-    EXPECT_NE(text.find(",,3,false,0\n"), std::string::npos) << "no angle for the root branch: " << text;
+    // The stem's profile: its three nodes 0.5 apart, the junction's radius its neighbour's.
+    EXPECT_NE(text.find(",,3,false,0,0 0.5 1,0.20000000000000001 0.14999999999999999 0.14999999999999999\n"),
+              std::string::npos) << "no angle for the root branch, then the profile: " << text;
     EXPECT_NE(text.find("\n1,0,2,2,3,2,0.5,0.5,"), std::string::npos) << "the arm, order 2: " << text;
-    EXPECT_NE(text.find(",90,1,false,0\n"), std::string::npos) << "at right angles to the stem: " << text;
+    EXPECT_NE(text.find(",90,1,false,0,"), std::string::npos) << "at right angles to the stem: " << text;
 }
 
 TEST(BranchIo, TheJsonTableIsAnArrayOfObjects) {
@@ -57,7 +59,10 @@ TEST(BranchIo, TheJsonTableIsAnArrayOfObjects) {
     EXPECT_EQ(text.front(), '[');
     EXPECT_NE(text.find("{\"branch\": 0, \"parent\": -1, \"order\": 1,"), std::string::npos) << text;
     EXPECT_NE(text.find("\"angle_to_parent\": null"), std::string::npos) << text;
-    EXPECT_NE(text.find("\"closes_loop\": false, \"part\": 0}\n]"), std::string::npos) << text;
+    EXPECT_NE(text.find("\"closes_loop\": false, \"part\": 0, \"profile_along\": [0, 0.60000000000000009], "
+                        "\"profile_radius\": [0.10000000000000001, 0.10000000000000001]}\n]"),
+              std::string::npos)
+        << text;
 }
 
 TEST(BranchIo, EachPointsBranchAndPlace) {
@@ -93,8 +98,8 @@ TEST(BranchIo, TheReportLineGivesEachPartsTotals) {
     const TempDir dir;
     writeBranchTable(b, dir.file("parts.csv"));
     const std::string text = contents(dir.file("parts.csv"));
-    EXPECT_NE(text.find(",closes_loop,part\n"), std::string::npos) << text;
-    EXPECT_NE(text.find(",false,1\n"), std::string::npos) << text;
+    EXPECT_NE(text.find(",closes_loop,part,"), std::string::npos) << text;
+    EXPECT_NE(text.find(",false,1,"), std::string::npos) << text;
 }
 
 TEST(BranchIo, ASelectionIsDescribedByTheBranchesItLiesOn) {

@@ -26,7 +26,14 @@ void number(std::ostream& out, double value, const char* none) {
     else out << value;
 }
 
-std::vector<Column> columns(const char* none) {
+// A list of numbers: space-separated in a CSV cell, an array in JSON.
+void numbers(std::ostream& out, const std::vector<double>& values, bool json) {
+    out << (json ? "[" : "");
+    for (std::size_t i = 0; i < values.size(); ++i) out << (i ? (json ? ", " : " ") : "") << values[i];
+    out << (json ? "]" : "");
+}
+
+std::vector<Column> columns(const char* none, bool json) {
     return {
         {"branch", [](std::ostream& o, const Branch&, std::size_t i) { o << i; }},
         {"parent", [](std::ostream& o, const Branch& b, std::size_t) { o << b.parent; }},
@@ -44,6 +51,8 @@ std::vector<Column> columns(const char* none) {
         {"points", [](std::ostream& o, const Branch& b, std::size_t) { o << b.points; }},
         {"closes_loop", [](std::ostream& o, const Branch& b, std::size_t) { o << (b.closesLoop ? "true" : "false"); }},
         {"part", [](std::ostream& o, const Branch& b, std::size_t) { o << b.part; }},
+        {"profile_along", [json](std::ostream& o, const Branch& b, std::size_t) { numbers(o, b.along, json); }},
+        {"profile_radius", [json](std::ostream& o, const Branch& b, std::size_t) { numbers(o, b.radii, json); }},
     };
 }
 
@@ -59,7 +68,7 @@ void writeBranchTable(const SkeletonBranches& branches, const std::string& path)
         throw InvalidInput("Cannot write '" + path + "': branch tables are written as .csv or .json.");
     }
     const bool json = extensionOf(path) == "json";
-    const std::vector<Column> table = columns(json ? "null" : "");
+    const std::vector<Column> table = columns(json ? "null" : "", json);
     writeFileAtomically(path, [&](const std::string& temporary) {
         writeTextFile(temporary, [&](std::ostream& out) {
             if (!json) {

@@ -15,7 +15,9 @@ bool isBranchTableFileName(const std::string& path);
 // One row (CSV, with a header) or object (JSON, an array) per branch: branch, parent,
 // order, base_node, tip_node, nodes, length, chord, base_radius, tip_radius, mean_radius,
 // volume, angle_to_parent (degrees; empty in CSV and null in JSON for a root branch),
-// points, closes_loop. Written atomically; throws InvalidInput.
+// points, closes_loop, part, and the radius profile: profile_along and profile_radius,
+// one number per node from base to tip (space-separated in CSV, arrays in JSON). Written
+// atomically; throws InvalidInput.
 void writeBranchTable(const SkeletonBranches& branches, const std::string& path);
 
 // A CSV file, "branch,position" then one line per input point in the input's order: its

@@ -192,6 +192,9 @@ void measureShape(const std::vector<double>& radii, const std::vector<Point>& co
         branch.volume += M_PI * h / 3.0 * (a * a + a * b + b * b);
     }
     branch.chord = (course.back() - course.front()).norm();
+    branch.radii = radii;
+    branch.along.assign(1, 0.0);
+    for (std::size_t i = 1; i < path.size(); ++i) branch.along.push_back(branch.along.back() + bones[i]);
     branch.baseRadius = radii.front();
     branch.tipRadius = radii.back();
     branch.meanRadius = branch.length > 0.0 ? radiusLength / branch.length : branch.baseRadius;

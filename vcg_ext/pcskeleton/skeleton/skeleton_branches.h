@@ -35,6 +35,9 @@ struct Branch {
     double chord = 0.0;       // from base to tip in a straight line
     double baseRadius = 0.0, tipRadius = 0.0;
     double meanRadius = 0.0;  // along its length
+    // The radius profile: per node of `nodes`, its distance from the base along the branch
+    // and the branch's radius there.
+    std::vector<double> along, radii;
     double volume = 0.0;      // the bones as truncated cones of the nodes' radii
     // Degrees between the parent's direction where it ends and this branch's where it starts
     // (0: straight on); NaN for a branch from the root.
