@@ -37,25 +37,29 @@ double boneRadius(const SkeletonGraph& skeleton, std::size_t n, const std::vecto
     const Point& node = skeleton.nodes[n];
     const Point axis = (skeleton.nodes[std::size_t(around[1])] - skeleton.nodes[std::size_t(around[0])]).normalized();
     if (!axis.allFinite()) return 0.0;
-    std::vector<double> distances;
-    Point towards = Point::Zero();
+    // One pass over the points (scattered through a large cloud): each one's offset across
+    // the bone, in the plane's coordinates, and its distance from the node.
+    const Point u = axis.unitOrthogonal(), v = axis.cross(u);
+    std::vector<Eigen::Vector2d> across;
+    across.reserve(members.size());
     double nearestPoint = std::numeric_limits<double>::infinity();
     for (int i : members) {
         const Point q = points[std::size_t(i)] - node;
-        const Point across = q - q.dot(axis) * axis;
-        const double d = across.norm();
-        if (d > 0.0) towards += across / d;
-        distances.push_back(d);
-        nearestPoint = std::min(nearestPoint, q.norm());
+        across.emplace_back(q.dot(u), q.dot(v));
+        nearestPoint = std::min(nearestPoint, q.squaredNorm());
     }
-    if (towards.norm() > kSurrounded * double(members.size())) return 0.0;
+    nearestPoint = std::sqrt(nearestPoint);
+    std::vector<double> distances;
+    distances.reserve(across.size());
+    Eigen::Vector2d towards = Eigen::Vector2d::Zero();
     Eigen::Matrix2d spread2 = Eigen::Matrix2d::Zero();
-    const Point u = axis.unitOrthogonal(), v = axis.cross(u);
-    for (int i : members) {
-        const Point q = points[std::size_t(i)] - node;
-        const Eigen::Vector2d a(q.dot(u), q.dot(v));
+    for (const Eigen::Vector2d& a : across) {
+        const double d = a.norm();
+        if (d > 0.0) towards += a / d;
+        distances.push_back(d);
         spread2 += a * a.transpose();
     }
+    if (towards.norm() > kSurrounded * double(members.size())) return 0.0;
     const Eigen::Vector2d extent = Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(spread2).eigenvalues();
     if (!(extent(0) >= kFlattest * kFlattest * extent(1))) return 0.0;
 
@@ -90,7 +94,11 @@ std::vector<double> boneRadii(const SkeletonGraph& skeleton, const PointList& po
     const std::vector<std::vector<int>> adjacent = adjacencyLists(count, skeleton.edges);
     const std::vector<std::vector<int>> members = pointsOfNodes(skeleton);
     std::vector<double> radii(count, 0.0);
-    for (std::size_t n = 0; n < count; ++n) radii[n] = boneRadius(skeleton, n, adjacent[n], members[n], points, nodeSpacing);
+    // Nodes of a large cloud own very different numbers of points.
+#pragma omp parallel for schedule(dynamic)
+    for (long n = 0; n < long(count); ++n) {
+        radii[std::size_t(n)] = boneRadius(skeleton, std::size_t(n), adjacent[std::size_t(n)], members[std::size_t(n)], points, nodeSpacing);
+    }
     return radii;
 }
 
