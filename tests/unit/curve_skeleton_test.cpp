@@ -4,6 +4,7 @@
 #include <pcskeleton/contraction/contraction_memory.h>
 #include <pcskeleton/io/point_cloud_io.h>
 #include "support/sampled_shapes.h"
+#include "support/scan_simulation.h"
 
 #include <gtest/gtest.h>
 
@@ -140,6 +141,29 @@ TEST(CurveSkeleton, CorrespondenceAndRadiiDescribeTheTube) {
     for (std::size_t i = 0; i < cloud.size(); i += 50) {
         EXPECT_LT(std::abs(cloud[i].z() - s.nodes[s.pointNode[i]].z()), 0.1) << "point " << i;
     }
+}
+
+// Noise of a third of the tube's radius: the bones' radii are still the tube's, measured
+// across the bone with the noise taken out (finishing/bone_radii.h); the mean distance of
+// each node's points, the embedding's radius, is well above it.
+double medianMiddleRadius(const SkeletonGraph& s, const std::vector<double>& radii) {
+    std::vector<double> middle;
+    for (std::size_t n = 0; n < s.nodeCount(); ++n) {
+        if (s.nodes[n].z() > 0.2 && s.nodes[n].z() < 0.8) middle.push_back(radii[n]);
+    }
+    if (middle.empty()) return 0.0;
+    std::nth_element(middle.begin(), middle.begin() + std::ptrdiff_t(middle.size() / 2), middle.end());
+    return middle[middle.size() / 2];
+}
+
+TEST(CurveSkeleton, ANoisyTubesRadiiAreTheTubesNotTheNoises) {
+    const PointList clean = shapes::cylinder(5000, 0.1, 1.0, /*capped=*/false);
+    const double diagonal = std::sqrt(1.0 + 0.2 * 0.2 * 2);
+    const PointList cloud = shapes::withNoise(clean, 0.03 / diagonal, 5);
+    const SkeletonResult result = computeCurveSkeleton(cloud);
+    const SkeletonGraph& s = result.skeleton;
+    EXPECT_NEAR(medianMiddleRadius(s, s.radii), 0.1, 0.003);
+    EXPECT_GT(medianMiddleRadius(s, meanDistanceToNodes(cloud, s.pointNode, s.nodes)), 0.105);
 }
 
 // An outlier far from the torus becomes a node owning one point: its radius (a distance
@@ -312,6 +336,16 @@ TEST(MultiResolution, LargeTorusHasOneCycleAndEveryPointItsNode) {
         EXPECT_NEAR(result.skeleton.radii[n], 0.25, 0.025) << "node " << n;
     }
     EXPECT_NE(describeFindings(result.quality).find("multi-resolution: "), std::string::npos);
+}
+
+// The same through the multi-resolution pipeline, whose radii come from every point.
+TEST(MultiResolution, ANoisyTorusesRadiiAreItsTubes) {
+    const PointList cloud = shapes::withNoise(shapes::torus(100000, 1.0, 0.25, 11), 0.08 / std::sqrt(2.5 * 2.5 * 2 + 0.25), 6);
+    const SkeletonResult result = computeCurveSkeleton(cloud);
+    ASSERT_EQ(analyseTopology(result.skeleton).cycles, 1);
+    std::vector<double> radii = result.skeleton.radii;
+    std::nth_element(radii.begin(), radii.begin() + std::ptrdiff_t(radii.size() / 2), radii.end());
+    EXPECT_NEAR(radii[radii.size() / 2], 0.25, 0.0075);
 }
 
 TEST(MultiResolution, LargeYHasThreeTips) {
