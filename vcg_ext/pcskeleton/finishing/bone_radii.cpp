@@ -20,13 +20,13 @@ constexpr std::size_t kMinimumPoints = 8;
 // test, node_recentering.cpp), and the correction, which assumes they surround the axis,
 // does not hold.
 constexpr double kSurrounded = 0.3;
-// The moments are not robust: one stray point adds far more to Var[d] than to E[d]. Points
-// beyond kTrim deviations of the median (from the median absolute deviation) are left
-// out; trimming a Gaussian there changes its variance by under 3%.
 // A cross-section flatter than this (its narrower second moment against its wider, as a
 // ratio of lengths) is a sheet's or a plate's, whose "radius" is no tube's: the correction
 // would only shrink it.
 constexpr double kFlattest = 0.5;
+// The moments are not robust: one stray point adds far more to Var[d] than to E[d]. Points
+// beyond kTrim deviations of the median (from the median absolute deviation) are left
+// out; trimming a Gaussian there changes its variance by under 3%.
 constexpr double kTrim = 3.0;
 constexpr double kDeviationsPerMad = 1.4826;  // a Gaussian's deviation per median absolute deviation
 
@@ -42,36 +42,36 @@ double boneRadius(const SkeletonGraph& skeleton, std::size_t n, const std::vecto
     const Point u = axis.unitOrthogonal(), v = axis.cross(u);
     std::vector<Eigen::Vector2d> across;
     across.reserve(members.size());
-    double nearestPoint = std::numeric_limits<double>::infinity();
+    double nearestSquared = std::numeric_limits<double>::infinity();
     for (int i : members) {
         const Point q = points[std::size_t(i)] - node;
         across.emplace_back(q.dot(u), q.dot(v));
-        nearestPoint = std::min(nearestPoint, q.squaredNorm());
+        nearestSquared = std::min(nearestSquared, q.squaredNorm());
     }
-    nearestPoint = std::sqrt(nearestPoint);
+    const double nearestPoint = std::sqrt(nearestSquared);
     std::vector<double> distances;
     distances.reserve(across.size());
     Eigen::Vector2d towards = Eigen::Vector2d::Zero();
-    Eigen::Matrix2d spread2 = Eigen::Matrix2d::Zero();
+    Eigen::Matrix2d moments = Eigen::Matrix2d::Zero();
     for (const Eigen::Vector2d& a : across) {
         const double d = a.norm();
         if (d > 0.0) towards += a / d;
         distances.push_back(d);
-        spread2 += a * a.transpose();
+        moments += a * a.transpose();
     }
     if (towards.norm() > kSurrounded * double(members.size())) return 0.0;
-    const Eigen::Vector2d extent = Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(spread2).eigenvalues();
+    const Eigen::Vector2d extent = Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(moments).eigenvalues();
     if (!(extent(0) >= kFlattest * kFlattest * extent(1))) return 0.0;
 
     const double middle = median(distances);
     std::vector<double> deviations;
     for (double d : distances) deviations.push_back(std::abs(d - middle));
     const double spread = kTrim * kDeviationsPerMad * median(deviations);
-    double sum = 0.0, squares = 0.0, nearest = std::numeric_limits<double>::infinity();
+    double sum = 0.0, squares = 0.0, nearestAcross = std::numeric_limits<double>::infinity();
     std::size_t kept = 0;
     for (double d : distances) {
         if (spread > 0.0 && std::abs(d - middle) > spread) continue;
-        sum += d, squares += d * d, nearest = std::min(nearest, d), ++kept;
+        sum += d, squares += d * d, nearestAcross = std::min(nearestAcross, d), ++kept;
     }
     const double mean = sum / double(kept), meanSquare = squares / double(kept);
     // E[d^2] - 2 Var[d] = 2 E[d]^2 - E[d^2], at most E[d]. Noise puts some points inside the
@@ -79,7 +79,7 @@ double boneRadius(const SkeletonGraph& skeleton, std::size_t n, const std::vecto
     // wall around this bone (a bend, where two parts meet, a flat section). (Points all at
     // one distance give it exactly, up to rounding.)
     const double squared = 2.0 * mean * mean - meanSquare;
-    if (!(squared >= nearest * nearest * (1.0 - 1e-9))) return 0.0;
+    if (!(squared >= nearestAcross * nearestAcross * (1.0 - 1e-9))) return 0.0;
     const double radius = std::sqrt(squared);
     // Nor may the radius leave the node farther from its points than the invariant allows
     // (data_support.h); the node does not move, so it stays inside the box.
@@ -97,7 +97,8 @@ std::vector<double> boneRadii(const SkeletonGraph& skeleton, const PointList& po
     // Nodes of a large cloud own very different numbers of points.
 #pragma omp parallel for schedule(dynamic)
     for (long n = 0; n < long(count); ++n) {
-        radii[std::size_t(n)] = boneRadius(skeleton, std::size_t(n), adjacent[std::size_t(n)], members[std::size_t(n)], points, nodeSpacing);
+        const std::size_t node = std::size_t(n);
+        radii[node] = boneRadius(skeleton, node, adjacent[node], members[node], points, nodeSpacing);
     }
     return radii;
 }
