@@ -408,14 +408,13 @@ py::dict branchesDict(const SkeletonBranches& b) {
     d["angle_to_parent"] = columnOf<double>(t, [](const Branch& x) { return x.angleToParent; });
     d["points"] = columnOf<int>(t, [](const Branch& x) { return x.points; });
     d["closes_loop"] = columnOf<bool>(t, [](const Branch& x) { return x.closesLoop; });
-    py::list nodes;
-    for (const Branch& x : t) nodes.append(columnOf<int>(x.nodes, [](int n) { return n; }));
-    d["nodes"] = nodes;
-    py::list along, radii;
+    py::list nodes, along, radii;
     for (const Branch& x : t) {
+        nodes.append(columnOf<int>(x.nodes, [](int n) { return n; }));
         along.append(columnOf<double>(x.along, [](double v) { return v; }));
         radii.append(columnOf<double>(x.radii, [](double v) { return v; }));
     }
+    d["nodes"] = nodes;
     d["profile_along"] = along;
     d["profile_radius"] = radii;
     d["node_branch"] = columnOf<int>(b.nodeBranch, [](int n) { return n; });

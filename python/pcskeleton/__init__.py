@@ -180,10 +180,11 @@ class Branches:
     bones), ``chord``, ``base_radius``, ``tip_radius``, ``mean_radius``, ``volume`` (the
     bones as truncated cones), ``angle_to_parent`` (degrees, 0 straight on; NaN from the
     root), ``points``, ``closes_loop``, ``part`` (the skeleton's connected part, from 0);
-    ``nodes``, a list of each branch's nodes from base
-    to tip, and its radius profile: ``profile_along`` (each node's distance from the base
-    along the branch) and ``profile_radius`` (the branch's radius there), lists of arrays. Per input point, ``point_branch`` (-1 for none) and ``point_position`` (0 at
-    the branch's base, 1 at its tip); per skeleton node, ``node_branch``.
+    ``nodes``, a list of each branch's nodes from base to tip, and its radius profile:
+    ``profile_along`` (each node's distance from the base along the branch) and
+    ``profile_radius`` (the branch's radius there), lists of arrays. Per input point,
+    ``point_branch`` (-1 for none) and ``point_position`` (0 at the branch's base, 1 at its
+    tip); per skeleton node, ``node_branch``.
     """
 
     COLUMNS = ("parent", "order", "base_node", "tip_node", "length", "chord", "base_radius", "tip_radius",

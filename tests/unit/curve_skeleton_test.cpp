@@ -2,6 +2,7 @@
 // extension) on tubes along known curves.
 #include <pcskeleton/curve_skeleton.h>
 #include <pcskeleton/contraction/contraction_memory.h>
+#include <pcskeleton/internal/median.h>
 #include <pcskeleton/io/point_cloud_io.h>
 #include "support/sampled_shapes.h"
 #include "support/scan_simulation.h"
@@ -151,9 +152,7 @@ double medianMiddleRadius(const SkeletonGraph& s, const std::vector<double>& rad
     for (std::size_t n = 0; n < s.nodeCount(); ++n) {
         if (s.nodes[n].z() > 0.2 && s.nodes[n].z() < 0.8) middle.push_back(radii[n]);
     }
-    if (middle.empty()) return 0.0;
-    std::nth_element(middle.begin(), middle.begin() + std::ptrdiff_t(middle.size() / 2), middle.end());
-    return middle[middle.size() / 2];
+    return middle.empty() ? 0.0 : median(middle);
 }
 
 TEST(CurveSkeleton, ANoisyTubesRadiiAreTheTubesNotTheNoises) {
@@ -343,9 +342,7 @@ TEST(MultiResolution, ANoisyTorusesRadiiAreItsTubes) {
     const PointList cloud = shapes::withNoise(shapes::torus(100000, 1.0, 0.25, 11), 0.08 / std::sqrt(2.5 * 2.5 * 2 + 0.25), 6);
     const SkeletonResult result = computeCurveSkeleton(cloud);
     ASSERT_EQ(analyseTopology(result.skeleton).cycles, 1);
-    std::vector<double> radii = result.skeleton.radii;
-    std::nth_element(radii.begin(), radii.begin() + std::ptrdiff_t(radii.size() / 2), radii.end());
-    EXPECT_NEAR(radii[radii.size() / 2], 0.25, 0.0075);
+    EXPECT_NEAR(median(result.skeleton.radii), 0.25, 0.0075);
 }
 
 TEST(MultiResolution, LargeYHasThreeTips) {

@@ -191,11 +191,10 @@ void ContractionInput::carryToAllPoints(SkeletonResult& result) const {
     // Radii from every point, as the embedding and the finishing measure them; a node
     // without points (or with only one, at its own place) keeps the radius it has.
     const std::vector<double> radius = meanDistanceToNodes(input_, skeleton.pointNode, skeleton.nodes);
-    const std::vector<double> boneRadius = boneRadii(skeleton, input_, result.quality.nodeSpacing);
     for (std::size_t n = 0; n < skeleton.nodeCount(); ++n) {
-        if (boneRadius[n] > 0) skeleton.radii[n] = boneRadius[n];
-        else if (radius[n] > 0) skeleton.radii[n] = radius[n];
+        if (radius[n] > 0) skeleton.radii[n] = radius[n];
     }
+    measureBoneRadii(skeleton, input_, result.quality.nodeSpacing);
     PointList& contracted = result.contraction.contracted;
     if (!contracted.empty()) {
         const PointList keptContracted = std::move(contracted);

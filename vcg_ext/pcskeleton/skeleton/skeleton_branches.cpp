@@ -184,30 +184,26 @@ void measureShape(const std::vector<double>& radii, const std::vector<Point>& co
                   Branch& branch) {
     const std::vector<int>& path = branch.nodes;
     double radiusLength = 0.0;
+    branch.along.assign(1, 0.0);
     for (std::size_t i = 1; i < path.size(); ++i) {
         const double h = bones[i];
         const double a = radii[i - 1], b = radii[i];
-        branch.length += h;
+        branch.along.push_back(branch.along.back() + h);
         radiusLength += h * (a + b) / 2.0;
         branch.volume += M_PI * h / 3.0 * (a * a + a * b + b * b);
     }
+    branch.length = branch.along.back();
     branch.chord = (course.back() - course.front()).norm();
     branch.radii = radii;
-    branch.along.assign(1, 0.0);
-    for (std::size_t i = 1; i < path.size(); ++i) branch.along.push_back(branch.along.back() + bones[i]);
     branch.baseRadius = radii.front();
     branch.tipRadius = radii.back();
     branch.meanRadius = branch.length > 0.0 ? radiusLength / branch.length : branch.baseRadius;
 }
 
-// The node halfway along a branch (by length), from its bones' lengths.
-std::size_t halfway(const std::vector<double>& bones, double length) {
-    double along = 0.0;
-    for (std::size_t i = 1; i < bones.size(); ++i) {
-        along += bones[i];
-        if (along >= length / 2.0) return i;
-    }
-    return bones.size() - 1;
+// The node halfway along a branch (by length), from each node's distance from its base.
+std::size_t halfway(const std::vector<double>& along) {
+    const auto middle = std::lower_bound(along.begin() + 1, along.end(), along.back() / 2.0);
+    return std::min(std::size_t(middle - along.begin()), along.size() - 1);
 }
 
 // At each junction the main axis goes on into the child with the longest continuation (the
@@ -296,15 +292,13 @@ SkeletonBranches measureBranches(const SkeletonGraph& skeleton, const BranchOpti
                 const std::vector<Point> course = courseOf(forks, branch.nodes);
                 const std::vector<double> bones = boneLengths(course);
                 measureShape(branchRadii(skeleton, groups, branch.nodes), course, bones, branch);
-                const Point middle = course[halfway(bones, branch.length)];
+                const Point middle = course[halfway(branch.along)];
                 endDirections.push_back(course.back() - middle);
                 const int index = int(branches.size());
-                double along = 0.0;
                 for (std::size_t i = 1; i < branch.nodes.size(); ++i) {
                     const int n = branch.nodes[i];
-                    along += bones[i];
                     reached[n] = true;
-                    if (result.nodeBranch[n] < 0) result.nodeBranch[n] = index, nodePosition[n] = along;
+                    if (result.nodeBranch[n] < 0) result.nodeBranch[n] = index, nodePosition[n] = branch.along[i];
                 }
                 if (!branch.closesLoop && neighbours[branch.nodes.back()].size() >= 3) {
                     junctions.push_back({branch.nodes.back(), index});
