@@ -47,12 +47,12 @@ log() { printf '[setup] %s\n' "$*" >&2; }
 missing_packages() {
   local p
   for p in "${PACKAGES[@]}"; do
-    dpkg-query -W -f='${Status}\n' "$p" 2>/dev/null | grep -q "install ok installed" || echo "$p"
+    [[ "$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null)" == *"install ok installed"* ]] || echo "$p"
   done
 }
 
 source_is_known() {
-  apt-cache showsrc meshlab 2>/dev/null | grep -q '^Package: meshlab'
+  grep -q '^Package: meshlab' <<<"$(apt-cache showsrc meshlab 2>/dev/null)"
 }
 
 deb_src_configured() {

@@ -12,7 +12,7 @@ cmake --install "$BUILD" --prefix "$WORK/prefix" --component dev >"$WORK/install
 for f in include/pcskeleton/curve_skeleton.h lib/cmake/pcskeleton/pcskeletonConfig.cmake; do
   [ -f "$WORK/prefix/$f" ] || fail "$f is not installed"
 done
-find "$WORK/prefix" -name 'libpcskeleton.a' | grep -q . || fail "libpcskeleton.a is not installed"
+[ -n "$(find "$WORK/prefix" -name 'libpcskeleton.a')" ] || fail "libpcskeleton.a is not installed"
 # Nothing but the package's own files: no CGAL, CHOLMOD or vcglib header among them.
 if grep -rlE '#include *[<"](CGAL|vcg)/|cholmod' "$WORK/prefix/include"; then fail "a private dependency in the public headers"; fi
 cmake -S "$SRC/tests/package" -B "$WORK/consumer" -DCMAKE_PREFIX_PATH="$WORK/prefix" -DCMAKE_BUILD_TYPE=Release \

@@ -7,13 +7,14 @@
 set -euo pipefail
 RUNNER="$1"; VERSION="$2"; OURS="$3"
 fail() { echo "FAIL: $*"; exit 1; }
-"$RUNNER" --version | grep -qx "meshlab-run for MeshLab $VERSION" || fail "meshlab-run is not built for MeshLab $VERSION"
+grep -qx "meshlab-run for MeshLab $VERSION" <<<"$("$RUNNER" --version)" || fail "meshlab-run is not built for MeshLab $VERSION"
 out="$("$RUNNER" --list-plugins 2>&1)" || { echo "$out"; fail "meshlab-run --list-plugins failed"; }
 for plugin in FilterPCSkeleton EditSkeleton; do
   grep -q "^$plugin	.*/plugins/lib" <<<"$out" || { echo "$out"; fail "$plugin was not loaded"; }
   grep -q "^$plugin	.*	pcskeleton $OURS\$" <<<"$out" || { echo "$out"; fail "$plugin's vendor is not pcskeleton $OURS"; }
 done
-! grep -i "skeleton" <<<"$out" | grep -qi "unable\|error\|version\|precision" \
+ours_lines="$(grep -i skeleton <<<"$out" || true)"
+! grep -qi "unable\|error\|version\|precision" <<<"$ours_lines" \
   || { echo "$out"; fail "MeshLab reported a problem with our plugins"; }
 stock="$(grep -c '/plugins/lib' <<<"$out")"
 [ "$stock" -gt 20 ] || { echo "$out"; fail "only $stock plugins loaded: MeshLab's stock plugins are missing"; }
