@@ -61,7 +61,7 @@ mkdir -p branches && cp data/meshes/knot.off branches/
 grep -q "Branches of 'knot skeleton' (up axis +Z): 1 branch (order 1: 1)" branches/run.log \
   && grep -q "branch 0: order 1, from the root, .*closes a loop" branches/run.log \
   || { cat branches/run.log; echo "FAIL: the log does not give the knot's one branch closing its loop"; exit 1; }
-[ "$(wc -l <branches/branches.csv)" = 2 ] && head -1 branches/branches.csv | grep -q "^branch,parent,order," \
+[ "$(wc -l <branches/branches.csv)" = 2 ] && grep -q "^branch,parent,order," <<<"$(head -1 branches/branches.csv)" \
   || { cat branches/branches.csv; echo "FAIL: branches.csv is not a header and one branch"; exit 1; }
 (cd branches && xvfb-run -a "$MESHLABSERVER" -i knot.off -s "$SCRIPTS/measure_branches.mlx" >again.log 2>&1 || true)
 grep -q "exists already" branches/again.log || { cat branches/again.log; echo "FAIL: branches.csv was replaced"; exit 1; }
