@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <tuple>
 
 using namespace pcskeleton;
 
@@ -173,6 +174,31 @@ TEST(SkeletonBranches, JunctionsWhoseSpheresOverlapAreOneKnotAndTheirArmsLeaveIt
         EXPECT_DOUBLE_EQ(arm.baseRadius, 0.1);
     }
     EXPECT_EQ(b.nodeBranch[std::size_t(upper)], 0);  // the knot belongs to the stem
+}
+
+TEST(SkeletonBranches, AKnotWhoseForkLiesBetweenItsJunctionsIsMeasuredFromTheFork) {
+    // Four arms of length 1 along +-x and +-z meet at the origin, but contraction split the
+    // junction into two nodes 0.099 from it, beyond their radius (0.09), joined through a
+    // node at (0, 0, 0.07). The fork lies outside both junctions' balls yet inside the
+    // knot's tube around its inner bone: every arm is measured from it.
+    SkeletonGraph g = singleNode(Point(0, 0, -1), 0.09);
+    const int lower = addChain(g, 0, Point(0, 0, -0.1), 9, 0.09);  // the -z arm, up to the knot
+    g.nodes.emplace_back(0.07, 0, 0.07), g.radii.push_back(0.09);
+    const int right = int(g.nodeCount()) - 1;
+    g.edges.push_back({lower, right});
+    const int middle = addChain(g, right, Point(0, 0, 0.07), 1, 0.09);
+    const int left = addChain(g, middle, Point(-0.07, 0, 0.07), 1, 0.09);
+    std::vector<int> tips;
+    for (const auto& [from, start, end] : {std::tuple{right, Point(0.1, 0, 0), Point(1, 0, 0)},
+                                           std::tuple{left, Point(-0.1, 0, 0), Point(-1, 0, 0)},
+                                           std::tuple{left, Point(0, 0, 0.2), Point(0, 0, 1)}}) {
+        const int first = addChain(g, from, start, 1, 0.09);
+        tips.push_back(addChain(g, first, end, int(std::lround((end - start).norm() / 0.1)), 0.09));
+    }
+    const SkeletonBranches b = measureBranches(g);
+    ASSERT_EQ(b.branches.size(), 4u);  // the inner bone is no branch
+    EXPECT_NEAR(b.branches[0].length, 1.0, 0.001);  // the root's, from the lowest node up
+    for (int tip : tips) EXPECT_NEAR(branchEndingAt(b, tip).length, 1.0, 0.001) << "the arm ending at node " << tip;
 }
 
 TEST(SkeletonBranches, ATaperedTubeHasTheVolumeAndRadiiOfItsCone) {

@@ -53,14 +53,37 @@ struct JunctionGroups {
     }
 };
 
+// Whether `p` lies within the tube of a knot of junctions: the ball of one of its junctions
+// or, around one of its inner bones, the radius interpolated along the bone. A split
+// junction's nodes surround its fork at about their radius, so that the fork can lie
+// outside every one of their balls and still between them.
+bool withinKnot(const SkeletonGraph& skeleton, const std::vector<std::vector<int>>& neighbours,
+                const JunctionGroups& groups, const std::vector<int>& junctions, const Point& p) {
+    for (int junction : junctions) {
+        const Point& centre = skeleton.nodes[std::size_t(junction)];
+        if ((p - centre).norm() <= skeleton.radii[std::size_t(junction)]) return true;
+        for (int next : neighbours[std::size_t(junction)]) {
+            const std::vector<int> bone = walkChain(neighbours, junction, next);
+            if (!groups.isInnerBone(bone)) continue;
+            for (std::size_t i = 1; i < bone.size(); ++i) {
+                const std::size_t a = std::size_t(bone[i - 1]), b = std::size_t(bone[i]);
+                const Point ab = skeleton.nodes[b] - skeleton.nodes[a];
+                const double t = ab.squaredNorm() > 0.0 ? std::clamp((p - skeleton.nodes[a]).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
+                const double radius = (1.0 - t) * skeleton.radii[a] + t * skeleton.radii[b];
+                if ((p - (skeleton.nodes[a] + t * ab)).norm() <= radius) return true;
+            }
+        }
+    }
+    return false;
+}
+
 // Where a junction's arms meet: the point nearest (least squares) to the lines along its
 // arms (for a group of junctions, the arms of all of them). Contraction leaves a junction's
 // node in the middle of the arms' overlap, beyond the fork, so that measured from it the
 // stem is too long and the arms too short (docs/benchmarks.md#branch-measures). Each arm's
 // line is fitted to its nodes from one to four junction radii away (nearer ones lean
 // towards the junction). The junction's node itself when fewer than two arms give a line,
-// or when that point lies farther from every junction of the group than its radius (it
-// would leave their tubes).
+// or when that point lies outside the knot's tube (withinKnot).
 Point forkPoint(const SkeletonGraph& skeleton, const std::vector<std::vector<int>>& neighbours,
                 const JunctionGroups& groups, const std::vector<int>& junctions) {
     const Point& node = skeleton.nodes[std::size_t(junctions.front())];
@@ -91,10 +114,7 @@ Point forkPoint(const SkeletonGraph& skeleton, const std::vector<std::vector<int
     if (lines < 2) return node;
     const Point fork = normal.ldlt().solve(right);
     if (!fork.allFinite()) return node;
-    for (int junction : junctions) {
-        if ((fork - skeleton.nodes[std::size_t(junction)]).norm() <= skeleton.radii[std::size_t(junction)]) return fork;
-    }
-    return node;
+    return withinKnot(skeleton, neighbours, groups, junctions, fork) ? fork : node;
 }
 
 JunctionGroups groupJunctions(const SkeletonGraph& skeleton, const std::vector<std::vector<int>>& neighbours) {
