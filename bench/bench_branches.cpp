@@ -10,7 +10,10 @@
 // cap included: what a ruler laid along the object measures. Each true limb is matched to
 // the branch whose tip is nearest its end.
 //
-// usage: bench_branches [POINTS]      default 6000 points per shape
+// Each row is measured on several samples (seeds 1 to N): one sample's figures depend on
+// where its points happened to fall, and a method can look right on one and fail on others.
+//
+// usage: bench_branches [POINTS] [--samples N]      default 6000 points per shape, 10 samples
 #include <pcskeleton/core/openmp_wait_policy.h>
 #include <pcskeleton/curve_skeleton.h>
 #include <pcskeleton/internal/median.h>
@@ -18,6 +21,7 @@
 #include "support/sampled_shapes.h"
 #include "support/scan_simulation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -79,9 +83,13 @@ const Branch* nearestBranch(const SkeletonGraph& skeleton, const SkeletonBranche
     return best;
 }
 
-void measureLimbs(const Shape& shape, double noise, std::size_t n) {
-    PointList points = shapes::tube(shape.curve, shape.radius, n);
-    if (noise > 0) points = shapes::withNoise(points, noise);
+struct LimbMeasure {
+    double worstLength = 0, worstAngle = 0, pointsRight = 0;  // % of the length, degrees, % of the points
+};
+
+LimbMeasure measureLimbs(const Shape& shape, double noise, std::size_t n, std::uint32_t seed) {
+    PointList points = shapes::tube(shape.curve, shape.radius, n, seed);
+    if (noise > 0) points = shapes::withNoise(points, noise, seed);
     const SkeletonResult result = computeCurveSkeleton(points);
     const SkeletonBranches b = measureBranches(result.skeleton);
     double worstLength = 0, worstAngle = 0;
@@ -111,16 +119,18 @@ void measureLimbs(const Shape& shape, double noise, std::size_t n) {
         ++counted;
         right += branchOfLimb[limb] == &b.branches[std::size_t(b.pointBranch[i])];
     }
-    std::printf("%-6s %-6s %9zu %9zu %10.1f%% %10.1f %11.1f%%\n", shape.name.c_str(), noise > 0 ? "1%" : "clean",
-                shape.limbs.size(), b.branches.size(), 100 * worstLength, worstAngle,
-                counted ? 100.0 * right / counted : 0.0);
+    return {100 * worstLength, worstAngle, counted ? 100.0 * right / double(counted) : 0.0};
 }
 
 // A tube along z whose radius falls linearly from 0.15 to 0.05 over a length of 2, sampled
 // uniformly by area; the share of nodes (by bone length) whose radius is within 10% of the
 // truth at their height, away from the ends (10% of the length at each).
-void measureTaper(double noise, std::size_t n) {
-    std::mt19937 random(1);
+struct TaperMeasure {
+    double within = 0, volume = 0, length = 0;  // % of the length; errors in %
+};
+
+TaperMeasure measureTaper(double noise, std::size_t n, std::uint32_t seed) {
+    std::mt19937 random(seed);
     std::uniform_real_distribution<double> unit(0, 1);
     const auto radiusAt = [](double z) { return 0.15 - 0.05 * z; };
     PointList points;
@@ -129,7 +139,7 @@ void measureTaper(double noise, std::size_t n) {
         if (unit(random) * 0.15 > radiusAt(z)) continue;  // density grows with the radius
         points.emplace_back(radiusAt(z) * std::cos(angle), radiusAt(z) * std::sin(angle), z);
     }
-    if (noise > 0) points = shapes::withNoise(points, noise);
+    if (noise > 0) points = shapes::withNoise(points, noise, seed);
     const SkeletonResult result = computeCurveSkeleton(points);
     const SkeletonGraph& s = result.skeleton;
     double within = 0, total = 0;
@@ -146,9 +156,7 @@ void measureTaper(double noise, std::size_t n) {
     const double volume = M_PI * 2.0 / 3.0 * (0.15 * 0.15 + 0.15 * 0.05 + 0.05 * 0.05);
     double measured = 0, length = 0;
     for (const Branch& branch : b.branches) measured += branch.volume, length += branch.length;
-    std::printf("taper  %-6s radius within 10%% along %5.1f%% of the length; volume %+.1f%% of the cone's, length %+.1f%%\n",
-                noise > 0 ? "1%" : "clean", total > 0 ? 100 * within / total : 0.0, 100 * (measured - volume) / volume,
-                100 * (length - 2.0) / 2.0);
+    return {total > 0 ? 100 * within / total : 0.0, 100 * (measured - volume) / volume, 100 * (length - 2.0) / 2.0};
 }
 
 // The volume of the union of capsules of radius r around the segments: the tube's shape,
@@ -175,7 +183,13 @@ double tubeVolume(const shapes::Polyline& curve, double r) {
     return box.volume() * double(inside) / double(samples);
 }
 
-void measureTree(double noise, std::size_t n) {
+struct TreeMeasure {
+    bool branchesExact = false;
+    double length = 0, volume = 0;  // errors in %
+    int ordersRight = 0, ordersJudged = 0;
+};
+
+TreeMeasure measureTree(double noise, std::size_t n, std::uint32_t seed) {
     const double radius = 0.06;
     // The suite's tree made lopsided (the right side lower and shorter), so that the main
     // axis is not a tie.
@@ -186,8 +200,8 @@ void measureTree(double noise, std::size_t n) {
                                 {right, Point(0.6, -0.2, 1.5)}};
     const SkeletonGraph exact = shapes::curveSkeleton(tree, radius);
     const SkeletonBranches truth = measureBranches(exact);
-    PointList points = shapes::tube(tree, radius, n);
-    if (noise > 0) points = shapes::withNoise(points, noise);
+    PointList points = shapes::tube(tree, radius, n, seed);
+    if (noise > 0) points = shapes::withNoise(points, noise, seed);
     const SkeletonResult result = computeCurveSkeleton(points);
     const SkeletonBranches b = measureBranches(result.skeleton);
     double trueLength = 0, length = 0, volume = 0;
@@ -210,10 +224,8 @@ void measureTree(double noise, std::size_t n) {
     }
     trueLength += radius;  // the root's cap
     for (const Branch& branch : b.branches) length += branch.length, volume += branch.volume;
-    std::printf("tree   %-6s branches %zu/%zu, total length %+.1f%%, volume %+.1f%%, orders right %d/%d\n",
-                noise > 0 ? "1%" : "clean", b.branches.size(), truth.branches.size(),
-                100 * (length - trueLength) / trueLength, 100 * (volume - trueVolume) / trueVolume, ordersRight,
-                ordersJudged);
+    return {b.branches.size() == truth.branches.size(), 100 * (length - trueLength) / trueLength,
+            100 * (volume - trueVolume) / trueVolume, ordersRight, ordersJudged};
 }
 
 // Curved tubes, held out when the branches' course (fork points, smoothing) was chosen on the
@@ -221,7 +233,11 @@ void measureTree(double noise, std::size_t n) {
 // tube radius 0.06, 400 segments each. The measured total length against the curve's (and
 // for the helix its two caps), the volume against the tube's, the nodes' median radius
 // against the tube's.
-void measureCurve(bool knot, double noise, std::size_t n) {
+struct CurveMeasure {
+    double length = 0, bones = 0, volume = 0, radius = 0;  // errors in %
+};
+
+CurveMeasure measureCurve(bool knot, double noise, std::size_t n, std::uint32_t seed) {
     shapes::Polyline curve;
     const auto at = [knot](double s) {
         const double u = 2 * M_PI * s;
@@ -233,8 +249,8 @@ void measureCurve(bool knot, double noise, std::size_t n) {
         curve.push_back({at(i / 400.0), at((i + 1) / 400.0)});
         trueLength += (curve.back().b - curve.back().a).norm();
     }
-    PointList points = shapes::tube(curve, kRadius, n);
-    if (noise > 0) points = shapes::withNoise(points, noise);
+    PointList points = shapes::tube(curve, kRadius, n, seed);
+    if (noise > 0) points = shapes::withNoise(points, noise, seed);
     const SkeletonResult result = computeCurveSkeleton(points);
     const SkeletonBranches b = measureBranches(result.skeleton);
     double length = 0, bones = 0, volume = 0;
@@ -243,28 +259,111 @@ void measureCurve(bool knot, double noise, std::size_t n) {
     // The tube's volume: a cylinder along the curve (and for the helix two half-ball caps).
     const double curveLength = trueLength - (knot ? 0.0 : 2 * kRadius);
     const double trueVolume = M_PI * kRadius * kRadius * curveLength + (knot ? 0.0 : 4.0 / 3.0 * M_PI * std::pow(kRadius, 3));
-    std::printf("%-7s %-6s total length %+.1f%% (the bones as they lie: %+.1f%%), volume %+.1f%%, median radius %+.1f%%, %zu branch(es)\n",
-                knot ? "trefoil" : "helix", noise > 0 ? "1%" : "clean", 100 * (length - trueLength) / trueLength,
-                100 * (bones - trueLength) / trueLength, 100 * (volume - trueVolume) / trueVolume,
-                100 * (median(result.skeleton.radii) - kRadius) / kRadius, b.branches.size());
+    return {100 * (length - trueLength) / trueLength, 100 * (bones - trueLength) / trueLength,
+            100 * (volume - trueVolume) / trueVolume, 100 * (median(result.skeleton.radii) - kRadius) / kRadius};
+}
+
+// Median and worst (largest in magnitude, with its sign) of a measure over the samples.
+struct Spread {
+    double median, worst;
+};
+
+Spread spread(std::vector<double> values) {
+    Spread result{median(values), 0.0};
+    for (double v : values) {
+        if (std::abs(v) > std::abs(result.worst)) result.worst = v;
+    }
+    return result;
+}
+
+template <class Measure, class Field>
+std::vector<double> field(const std::vector<Measure>& samples, Field f) {
+    std::vector<double> values;
+    for (const Measure& m : samples) values.push_back(f(m));
+    return values;
+}
+
+template <class Measure, class Test>
+int count(const std::vector<Measure>& samples, Test test) {
+    return int(std::count_if(samples.begin(), samples.end(), test));
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
     pcskeleton::restartWithPassiveOpenMpWaits(argv);
-    const std::size_t n = argc > 1 ? std::strtoull(argv[1], nullptr, 10) : 6000;
-    std::printf("Branch measures, %zu points per shape. Lengths: worst limb's error in %% of its length;\n"
-                "angles: worst error in degrees; points: share of points in their limb's branch.\n", n);
-    std::printf("%-6s %-6s %9s %9s %11s %10s %12s\n", "shape", "noise", "limbs", "branches", "length err",
-                "angle err", "points right");
-    for (const Shape& shape : {yShape(), star()}) {
-        for (double noise : {0.0, 0.01}) measureLimbs(shape, noise, n);
+    std::size_t n = 6000;
+    std::uint32_t sampleCount = 10;
+    for (int i = 1; i < argc; ++i) {
+        if (std::string(argv[i]) == "--samples" && i + 1 < argc) {
+            sampleCount = std::uint32_t(std::strtoul(argv[++i], nullptr, 10));
+        } else {
+            n = std::strtoull(argv[i], nullptr, 10);
+        }
     }
-    for (double noise : {0.0, 0.01}) measureTaper(noise, n);
-    for (double noise : {0.0, 0.01}) measureTree(noise, n);
+    if (n == 0 || sampleCount == 0) {
+        std::fprintf(stderr, "usage: bench_branches [POINTS] [--samples N]\n");
+        return 2;
+    }
+    std::printf("Branch measures, %zu points per shape, %u samples per row (seeds 1 to %u): each figure is the\n"
+                "median over the samples, then the worst one; \"ok\" counts the samples that meet the target.\n",
+                n, sampleCount, sampleCount);
+    std::printf("Lengths: the worst limb's error in %% of its length (target 3%%); angles: the worst error in\n"
+                "degrees (target 5); points: the share of points in their limb's branch (target 95%% on the Y).\n");
+    std::printf("%-6s %-6s %21s %6s %19s %6s %19s\n", "shape", "noise", "length err", "ok", "angle err", "ok",
+                "points right");
+    for (const Shape& shape : {yShape(), star()}) {
+        for (double noise : {0.0, 0.01}) {
+            std::vector<LimbMeasure> samples;
+            for (std::uint32_t seed = 1; seed <= sampleCount; ++seed) samples.push_back(measureLimbs(shape, noise, n, seed));
+            const Spread length = spread(field(samples, [](const LimbMeasure& m) { return m.worstLength; }));
+            const Spread angle = spread(field(samples, [](const LimbMeasure& m) { return m.worstAngle; }));
+            const std::vector<double> right = field(samples, [](const LimbMeasure& m) { return m.pointsRight; });
+            std::printf("%-6s %-6s %9.1f%% (%6.1f%%) %3d/%-2u %8.1f (%6.1f) %3d/%-2u %8.1f%% (%5.1f%%)\n", shape.name.c_str(),
+                        noise > 0 ? "1%" : "clean", length.median, length.worst,
+                        count(samples, [](const LimbMeasure& m) { return m.worstLength <= 3.0; }), sampleCount,
+                        angle.median, angle.worst, count(samples, [](const LimbMeasure& m) { return m.worstAngle <= 5.0; }),
+                        sampleCount, median(right), *std::min_element(right.begin(), right.end()));
+        }
+    }
+    for (double noise : {0.0, 0.01}) {
+        std::vector<TaperMeasure> samples;
+        for (std::uint32_t seed = 1; seed <= sampleCount; ++seed) samples.push_back(measureTaper(noise, n, seed));
+        const std::vector<double> within = field(samples, [](const TaperMeasure& m) { return m.within; });
+        const Spread volume = spread(field(samples, [](const TaperMeasure& m) { return m.volume; }));
+        const Spread length = spread(field(samples, [](const TaperMeasure& m) { return m.length; }));
+        std::printf("taper  %-6s radius within 10%% along %.1f%% (lowest %.1f%%) of the length, ok %d/%u (target 90%%); "
+                    "volume %+.1f%% (%+.1f%%), length %+.1f%% (%+.1f%%)\n",
+                    noise > 0 ? "1%" : "clean", median(within), *std::min_element(within.begin(), within.end()),
+                    count(samples, [](const TaperMeasure& m) { return m.within >= 90.0; }), sampleCount, volume.median,
+                    volume.worst, length.median, length.worst);
+    }
+    for (double noise : {0.0, 0.01}) {
+        std::vector<TreeMeasure> samples;
+        for (std::uint32_t seed = 1; seed <= sampleCount; ++seed) samples.push_back(measureTree(noise, n, seed));
+        const Spread length = spread(field(samples, [](const TreeMeasure& m) { return m.length; }));
+        const Spread volume = spread(field(samples, [](const TreeMeasure& m) { return m.volume; }));
+        int right = 0, judged = 0;
+        for (const TreeMeasure& m : samples) right += m.ordersRight, judged += m.ordersJudged;
+        std::printf("tree   %-6s branch count exact %d/%u; total length %+.1f%% (%+.1f%%), volume %+.1f%% (%+.1f%%); "
+                    "orders right %d/%d, all right in %d/%u\n",
+                    noise > 0 ? "1%" : "clean", count(samples, [](const TreeMeasure& m) { return m.branchesExact; }),
+                    sampleCount, length.median, length.worst, volume.median, volume.worst, right, judged,
+                    count(samples, [](const TreeMeasure& m) { return m.ordersRight == m.ordersJudged; }), sampleCount);
+    }
     for (bool knot : {false, true}) {
-        for (double noise : {0.0, 0.01}) measureCurve(knot, noise, n);
+        for (double noise : {0.0, 0.01}) {
+            std::vector<CurveMeasure> samples;
+            for (std::uint32_t seed = 1; seed <= sampleCount; ++seed) samples.push_back(measureCurve(knot, noise, n, seed));
+            const Spread length = spread(field(samples, [](const CurveMeasure& m) { return m.length; }));
+            const Spread bones = spread(field(samples, [](const CurveMeasure& m) { return m.bones; }));
+            const Spread volume = spread(field(samples, [](const CurveMeasure& m) { return m.volume; }));
+            const Spread radius = spread(field(samples, [](const CurveMeasure& m) { return m.radius; }));
+            std::printf("%-7s %-6s total length %+.1f%% (%+.1f%%) (the bones as they lie: %+.1f%% (%+.1f%%)), "
+                        "volume %+.1f%% (%+.1f%%), median radius %+.1f%% (%+.1f%%)\n",
+                        knot ? "trefoil" : "helix", noise > 0 ? "1%" : "clean", length.median, length.worst, bones.median,
+                        bones.worst, volume.median, volume.worst, radius.median, radius.worst);
+        }
     }
     return 0;
 }
