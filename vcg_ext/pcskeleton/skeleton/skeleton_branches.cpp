@@ -81,13 +81,16 @@ bool withinKnot(const SkeletonGraph& skeleton, const std::vector<std::vector<int
 // arms (for a group of junctions, the arms of all of them). Contraction leaves a junction's
 // node in the middle of the arms' overlap, beyond the fork, so that measured from it the
 // stem is too long and the arms too short (docs/benchmarks.md#branch-measures). Each arm's
-// line is fitted to its nodes from one to four junction radii away (nearer ones lean
-// towards the junction). The junction's node itself when fewer than two arms give a line,
+// line is fitted to its nodes from one to kArmLineReach junction radii away (nearer ones
+// lean towards the junction). The junction's node itself when fewer than two arms give a line,
 // or when that point lies outside the knot's tube (withinKnot).
 Point forkPoint(const SkeletonGraph& skeleton, const std::vector<std::vector<int>>& neighbours,
                 const JunctionGroups& groups, const std::vector<int>& junctions) {
     const Point& node = skeleton.nodes[std::size_t(junctions.front())];
     constexpr double kPull = 1e-3;  // towards the node, so that parallel arms still give one point
+    // Farther, a bent arm's line misses the fork; nearer, a noisy arm's wavers. Chosen on the Y
+    // and the star over ten samples each (docs/benchmarks.md#branch-measures).
+    constexpr double kArmLineReach = 5.0;
     Eigen::Matrix3d normal = kPull * Eigen::Matrix3d::Identity();
     Point right = kPull * node;
     int lines = 0;
@@ -98,9 +101,9 @@ Point forkPoint(const SkeletonGraph& skeleton, const std::vector<std::vector<int
             if (groups.isInnerBone(arm)) continue;
             std::vector<int> far;
             double along = 0.0;
-            for (std::size_t i = 1; i < arm.size() && along <= 4.0 * radius; ++i) {
+            for (std::size_t i = 1; i < arm.size() && along <= kArmLineReach * radius; ++i) {
                 along += (skeleton.nodes[std::size_t(arm[i])] - skeleton.nodes[std::size_t(arm[i - 1])]).norm();
-                if (along >= radius && along <= 4.0 * radius) far.push_back(arm[i]);
+                if (along >= radius && along <= kArmLineReach * radius) far.push_back(arm[i]);
             }
             if (far.size() < 2) continue;
             const LocalPlane fit = fitLocalPlane(skeleton.nodes, far);
