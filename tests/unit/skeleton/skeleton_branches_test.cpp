@@ -232,6 +232,34 @@ TEST(SkeletonBranches, EachPointGetsItsNodesBranchAndItsPlaceAlongIt) {
     EXPECT_EQ(b.branches[std::size_t(longArm)].points, 8);
 }
 
+TEST(SkeletonBranches, GivenThePointsAJunctionsPointsGoToTheArmTheyLieAlong) {
+    // The Y's junction node holds points of its three arms, 0.06 from the fork along each.
+    Fork y;
+    const Point fork(0, 0, 1);
+    const Point along[] = {Point(0, 0, -1), Point(1, 0, 1).normalized(), Point(-1, 0, 1).normalized()};
+    const int tipOf[] = {0, y.longTip, y.shortTip};
+    PointList points;
+    for (const Point& direction : along) {
+        for (double side : {-0.01, 0.01}) {
+            points.push_back(fork + 0.06 * direction + Point(0, side, 0));
+            y.graph.pointNode.push_back(y.fork);
+        }
+    }
+    const SkeletonBranches byNode = measureBranches(y.graph);
+    for (int branch : byNode.pointBranch) EXPECT_EQ(branch, 0);  // all the stem's, which reaches the junction
+    const SkeletonBranches byPoint = measureBranches(y.graph, points);
+    for (std::size_t arm = 0; arm < 3; ++arm) {
+        const int expected = arm == 0 ? 0 : int(&branchEndingAt(byPoint, tipOf[arm]) - byPoint.branches.data());
+        for (std::size_t i = 2 * arm; i < 2 * arm + 2; ++i) {
+            EXPECT_EQ(byPoint.pointBranch[i], expected) << "point " << i;
+            // At its place along the branch: near the stem's top, near the arms' base.
+            EXPECT_NEAR(byPoint.pointPosition[i], arm == 0 ? 1.0 - 0.06 / 1.0 : 0.06 / byPoint.branches[std::size_t(expected)].length, 0.01);
+        }
+    }
+    EXPECT_EQ(byPoint.branches[0].points, 2);
+    EXPECT_THROW(measureBranches(y.graph, PointList(points.begin(), points.end() - 1)), CallerError);
+}
+
 TEST(SkeletonBranches, PartsGrowFromTheirOwnRootsAndLoneNodesHaveNoBranch) {
     SkeletonGraph g = singleNode(Point(0, 0, 0));
     addChain(g, 0, Point(0, 0, 1), 5);

@@ -252,7 +252,25 @@ void assignOrders(std::vector<Branch>& branches) {
 
 }  // namespace
 
-SkeletonBranches measureBranches(const SkeletonGraph& skeleton, const BranchOptions& options) {
+namespace {
+
+// The point of a branch's course nearest `p` among its bones within `bones` of the end at
+// `atBase` (its base) or not (its tip): (distance, place along the branch).
+std::pair<double, double> nearestOnCourseEnd(const std::vector<Point>& course, const std::vector<double>& along,
+                                             bool atBase, std::size_t bones, const Point& p) {
+    std::pair<double, double> best{std::numeric_limits<double>::infinity(), 0.0};
+    const std::size_t last = course.size() - 1;
+    for (std::size_t k = 0; k < std::min(bones, last); ++k) {
+        const std::size_t i = atBase ? k : last - k - 1;  // the bone from course[i] to course[i + 1]
+        const Point ab = course[i + 1] - course[i];
+        const double t = ab.squaredNorm() > 0.0 ? std::clamp((p - course[i]).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
+        const double distance = (p - (course[i] + t * ab)).norm();
+        if (distance < best.first) best = {distance, along[i] + t * (along[i + 1] - along[i])};
+    }
+    return best;
+}
+
+SkeletonBranches measureBranchesOf(const SkeletonGraph& skeleton, const PointList* points, const BranchOptions& options) {
     const std::size_t count = skeleton.nodeCount();
     if (!options.up.allFinite() || !(options.up.norm() > 0.0)) {
         throw InvalidInput("The up axis has no length: give a direction such as 0 0 1.");
@@ -275,6 +293,7 @@ SkeletonBranches measureBranches(const SkeletonGraph& skeleton, const BranchOpti
     // nodes next to a junction lean towards it, so a bone or two there tells little. Its
     // children's angles are measured from it, to their own directions over their first half.
     std::vector<Point> endDirections;
+    std::vector<std::vector<Point>> courses;  // per branch
     SkeletonBranches result;
     std::vector<Branch>& branches = result.branches;
     result.nodeBranch.assign(count, -1);
@@ -313,6 +332,7 @@ SkeletonBranches measureBranches(const SkeletonGraph& skeleton, const BranchOpti
                 }
                 branch.closesLoop = reached[branch.nodes.back()];
                 const std::vector<Point> course = courseOf(forks, branch.nodes);
+                courses.push_back(course);
                 const std::vector<double> bones = boneLengths(course);
                 measureShape(branchRadii(skeleton, groups, branch.nodes), course, bones, branch);
                 const Point middle = course[halfway(branch.along)];
@@ -338,15 +358,49 @@ SkeletonBranches measureBranches(const SkeletonGraph& skeleton, const BranchOpti
 
     result.pointBranch.assign(skeleton.pointNode.size(), -1);
     result.pointPosition.assign(skeleton.pointNode.size(), std::numeric_limits<double>::quiet_NaN());
+    // Per knot of junctions, the branches with an end there: (branch, whether at its base).
+    std::vector<std::vector<std::pair<int, bool>>> knotBranches(groups.junctions.size());
+    for (std::size_t b = 0; b < branches.size(); ++b) {
+        const int base = groups.group[std::size_t(branches[b].nodes.front())];
+        const int tip = groups.group[std::size_t(branches[b].nodes.back())];
+        if (base >= 0) knotBranches[std::size_t(base)].push_back({int(b), true});
+        if (tip >= 0) knotBranches[std::size_t(tip)].push_back({int(b), false});
+    }
+    // Near a knot a point is judged by the bones that leave it: farther, they lean apart.
+    constexpr std::size_t kKnotBones = 3;
     for (std::size_t i = 0; i < skeleton.pointNode.size(); ++i) {
         const int node = skeleton.pointNode[i];
         if (node < 0 || node >= int(count) || result.nodeBranch[node] < 0) continue;
-        Branch& branch = branches[std::size_t(result.nodeBranch[node])];
-        result.pointBranch[i] = result.nodeBranch[node];
-        result.pointPosition[i] = branch.length > 0.0 ? nodePosition[node] / branch.length : 0.0;
+        int b = result.nodeBranch[node];
+        double position = nodePosition[node];
+        const int knot = groups.group[std::size_t(node)];
+        if (points && knot >= 0) {
+            double nearest = std::numeric_limits<double>::infinity();
+            for (const auto& [candidate, atBase] : knotBranches[std::size_t(knot)]) {
+                const auto [distance, along] = nearestOnCourseEnd(courses[std::size_t(candidate)], branches[std::size_t(candidate)].along,
+                                                                  atBase, kKnotBones, (*points)[i]);
+                if (distance < nearest) nearest = distance, b = candidate, position = along;
+            }
+        }
+        Branch& branch = branches[std::size_t(b)];
+        result.pointBranch[i] = b;
+        result.pointPosition[i] = branch.length > 0.0 ? position / branch.length : 0.0;
         ++branch.points;
     }
     return result;
+}
+
+}  // namespace
+
+SkeletonBranches measureBranches(const SkeletonGraph& skeleton, const BranchOptions& options) {
+    return measureBranchesOf(skeleton, nullptr, options);
+}
+
+SkeletonBranches measureBranches(const SkeletonGraph& skeleton, const PointList& points, const BranchOptions& options) {
+    if (points.size() != skeleton.pointNode.size()) {
+        throw CallerError("measureBranches: one point per entry of the skeleton's correspondence expected");
+    }
+    return measureBranchesOf(skeleton, &points, options);
 }
 
 }  // namespace pcskeleton

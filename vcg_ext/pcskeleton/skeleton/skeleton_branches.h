@@ -42,7 +42,7 @@ struct Branch {
     // Degrees between the parent's direction where it ends and this branch's where it starts
     // (0: straight on); NaN for a branch from the root.
     double angleToParent = 0.0;
-    int points = 0;  // input points whose node is on the branch (its base excluded)
+    int points = 0;  // input points of the branch (pointBranch)
 };
 
 struct BranchOptions {
@@ -60,6 +60,15 @@ struct SkeletonBranches {
 };
 
 // Throws InvalidInput for an `up` axis of zero length or a root that is not a node.
+// Each input point goes to its node's branch; a junction's node holds points of all its
+// arms, and they all go to the branch that reaches it.
 SkeletonBranches measureBranches(const SkeletonGraph& skeleton, const BranchOptions& options = {});
+
+// The same, with the skeleton's input points (`points[i]` is the point of
+// skeleton.pointNode[i]): the points of a junction, or of a knot of junctions, go each to
+// the branch it lies along (the one whose course near the knot passes nearest it), at its
+// place along that branch.
+SkeletonBranches measureBranches(const SkeletonGraph& skeleton, const PointList& points,
+                                 const BranchOptions& options = {});
 
 }  // namespace pcskeleton
