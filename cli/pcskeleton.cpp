@@ -602,7 +602,10 @@ int main(int argc, char** argv) {
         }
         SkeletonBranches branches;
         if (!options.branches.empty() || !options.pointBranches.empty()) {
-            branches = measureBranches(result.skeleton, options.branchOptions);
+            // A skeleton read with --skeleton has no correspondence to the points.
+            branches = result.skeleton.pointNode.size() == points.size()
+                           ? measureBranches(result.skeleton, points, options.branchOptions)
+                           : measureBranches(result.skeleton, options.branchOptions);
             if (!options.branches.empty()) writes.emplace_back(options.branches, [&] { writeBranchTable(branches, options.branches); });
             if (!options.pointBranches.empty()) {
                 writes.emplace_back(options.pointBranches, [&] { writePointBranches(branches, options.pointBranches); });

@@ -607,7 +607,18 @@ bool FilterPCSkeletonPlugin::measureBranches(MeshDocument& md, const RichParamet
     }
     options.up = kUpAxes[axis];
     options.root = parameters.getInt("rootNode");
-    const pcskeleton::SkeletonBranches branches = pcskeleton::measureBranches(skeleton, options);
+    // With the layer the skeleton was computed from, each point of a junction goes to the
+    // branch it lies along (the correspondence is by that layer's vertex index).
+    MeshModel* source = sourceLayerOf(md, layer);
+    const LayerPoints input = source != nullptr ? collectPoints(*source) : LayerPoints{};
+    pcskeleton::PointList pointOfSlot(skeleton.pointNode.size(), pcskeleton::Point::Zero());
+    std::size_t placed = 0;
+    for (std::size_t i = 0; i < input.points.size(); ++i) {
+        const std::size_t slot = std::size_t(input.vertexIndex[i]);
+        if (slot < pointOfSlot.size()) pointOfSlot[slot] = input.points[i], ++placed;
+    }
+    const pcskeleton::SkeletonBranches branches = placed > 0 ? pcskeleton::measureBranches(skeleton, pointOfSlot, options)
+                                                              : pcskeleton::measureBranches(skeleton, options);
     const QString fileName = parameters.getSaveFileName("tableFile");
     if (!fileName.isEmpty()) {
         if (!pcskeleton::isBranchTableFileName(fileName.toStdString())) {
@@ -633,12 +644,10 @@ bool FilterPCSkeletonPlugin::measureBranches(MeshDocument& md, const RichParamet
     if (!fileName.isEmpty()) {
         writeLog(*this, "Branch table written to '%s'.", qUtf8Printable(QFileInfo(fileName).absoluteFilePath()));
     }
-    MeshModel* source = sourceLayerOf(md, layer);
     if (source == nullptr || skeleton.pointNode.empty()) {
         writeLog(*this, "No points coloured by branch: the layer the skeleton was computed from is not open.");
         return true;
     }
-    const LayerPoints input = collectPoints(*source);
     std::vector<int> labels(input.points.size(), -1);
     for (std::size_t i = 0; i < input.points.size(); ++i) {
         const std::size_t slot = std::size_t(input.vertexIndex[i]);

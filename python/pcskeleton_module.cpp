@@ -655,15 +655,22 @@ PYBIND11_MODULE(_pcskeleton, m) {
         .def_property_readonly("topology", [](const PySkeleton& s) { return topologyDict(analyseTopology(s.graph)); })
         .def("write", [](const PySkeleton& s, const std::string& path) { writeSkeleton(s.graph, path); }, py::arg("path"))
         .def("_measure_branches",
-             [](const PySkeleton& s, const DoubleArray& up, int root) {
+             [](const PySkeleton& s, const DoubleArray& up, int root, const py::object& points) {
                  const PointList axis = pointsFrom(up, "up");
                  if (axis.size() != 1) throw InvalidInput("up must be one direction of three numbers, e.g. (0, 0, 1).");
                  BranchOptions options;
                  options.up = axis[0];
                  options.root = root;
-                 return branchesDict(measureBranches(s.graph, options));
+                 if (points.is_none()) return branchesDict(measureBranches(s.graph, options));
+                 const PointList input = pointsFrom(points.cast<DoubleArray>(), "points");
+                 if (input.size() != s.graph.pointNode.size()) {
+                     throw InvalidInput("points must be the " + std::to_string(s.graph.pointNode.size()) +
+                                        " points the skeleton was computed from, one row each; got " +
+                                        std::to_string(input.size()) + ".");
+                 }
+                 return branchesDict(measureBranches(s.graph, input, options));
              },
-             py::arg("up"), py::arg("root"))
+             py::arg("up"), py::arg("root"), py::arg("points"))
         .def("__len__", [](const PySkeleton& s) { return s.graph.nodeCount(); })
         // Pickled as copies of its arrays and its report, so that a Skeleton crosses to
         // other processes (a process pool, a Dask cluster) and back exactly.

@@ -223,13 +223,17 @@ class Branches:
         return pandas.DataFrame({name: getattr(self, name) for name in self.COLUMNS})
 
 
-def _measure_branches(self, up=(0.0, 0.0, 1.0), root=None):
+def _measure_branches(self, up=(0.0, 0.0, 1.0), root=None, points=None):
     """The skeleton's branches (see Branches): each part grows from its lowest node along
-    ``up``, except the part holding node ``root``, which grows from it. A zero ``up`` or a
-    root that is not a node raises ValueError."""
+    ``up``, except the part holding node ``root``, which grows from it. With ``points``,
+    the (N, 3) points the skeleton was computed from, each point of a junction goes to the
+    branch it lies along; without, to the branch that reaches the junction. A zero ``up``,
+    a root that is not a node, or points that are not the skeleton's raise ValueError."""
     import numpy
     axis = numpy.asarray(up, dtype=numpy.float64).reshape(-1, 3)
-    return Branches(self._measure_branches(axis, -1 if root is None else int(root)))
+    if points is not None:
+        points = numpy.asarray(points, dtype=numpy.float64)
+    return Branches(self._measure_branches(axis, -1 if root is None else int(root), points))
 
 
 def _branches(self):

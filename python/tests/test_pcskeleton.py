@@ -371,6 +371,37 @@ def test_every_point_with_a_node_gets_a_branch_and_a_place(torus_points, torus_s
     assert torus_skeleton.branches.closes_loop.any(), "the torus's loop is closed by a branch"
 
 
+def test_given_the_points_a_junctions_points_go_to_the_arm_they_lie_along():
+    # A Y sampled as a tube: its junction node holds points of all three limbs.
+    rng = np.random.default_rng(3)
+    limbs = [((0, 0, 0), (0, 0, 1)), ((0, 0, 1), (-0.5, 0, 1.5)), ((0, 0, 1), (0.6, 0, 1.6))]
+    points, limb_of = [], []
+    for index, (a, b) in enumerate(limbs):
+        a, b = np.array(a, float), np.array(b, float)
+        axis = (b - a) / np.linalg.norm(b - a)
+        side = np.cross(axis, (0, 1, 0)) if abs(axis[1]) < 0.9 else np.cross(axis, (1, 0, 0))
+        side /= np.linalg.norm(side)
+        other = np.cross(axis, side)
+        t, angle = rng.random(2000), rng.random(2000) * 2 * np.pi
+        ring = 0.06 * (np.cos(angle)[:, None] * side + np.sin(angle)[:, None] * other)
+        points.append(a + t[:, None] * (b - a) + ring)
+        limb_of += [index] * 2000
+    points, limb_of = np.vstack(points), np.array(limb_of)
+    skeleton = pcskeleton.skeletonize(points)
+    by_node = skeleton.measure_branches().point_branch
+    by_point = skeleton.measure_branches(points=points).point_branch
+    tips = skeleton.measure_branches().tip_node
+    # Each limb's branch: the one whose tip is nearest the limb's end (the stem's from the root).
+    ends = [limbs[0][0], limbs[1][1], limbs[2][1]]
+    nodes = skeleton.nodes
+    branch_of_limb = [int(np.argmin([np.linalg.norm(nodes[t] - e) for t in tips])) for e in ends]
+    branch_of_limb[0] = 0
+    right = lambda branch: np.mean(branch == np.array(branch_of_limb)[limb_of])
+    assert right(by_point) > 0.95 and right(by_point) > right(by_node) + 0.01, (right(by_point), right(by_node))
+    with pytest.raises(ValueError, match="points must be the 6000 points the skeleton was computed from"):
+        skeleton.measure_branches(points=points[:-1])
+
+
 def test_branches_refuse_a_zero_up_axis_or_a_root_that_is_no_node():
     skeleton = _fork()[0]
     with pytest.raises(ValueError, match="The up axis has no length"):

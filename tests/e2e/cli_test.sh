@@ -406,7 +406,7 @@ total = sum(math.dist(nodes[a], nodes[b]) for a, b in edges)
 assert 0.95 * total < rows[0]["length"] <= total, (rows[0]["length"], total)
 PY
 "$PCSKELETON" $M/elephant.off -o elephant_measured.ply --branches elephant.csv --point-branches elephant_points.csv \
-  2>elephant_branches.log
+  --correspondence elephant_measured.nodes 2>elephant_branches.log
 rows=$(($(wc -l <elephant.csv) - 1))
 grep -q "^Branches: $rows branches (order 1: " elephant_branches.log \
   || { cat elephant_branches.log; fail "the report's branch line does not count the table's $rows rows"; }
@@ -414,6 +414,29 @@ grep -q "^Branches: $rows branches (order 1: " elephant_branches.log \
   || fail "elephant_points.csv: not one line per point after the header"
 awk -F, -v rows="$rows" 'NR > 1 && ($1 < -1 || $1 >= rows || ($1 >= 0 && ($2 < 0 || $2 > 1))) { exit 1 }' \
   elephant_points.csv || fail "a point's branch or place is out of range"
+# A junction's node holds points of all its arms: each goes to the arm it lies along.
+/usr/bin/python3 - elephant_measured.ply elephant_measured.nodes elephant_points.csv <<'PY' \
+  || fail "the points of a junction all went to one branch"
+import sys, collections
+text = open(sys.argv[1], "rb").read()
+header, body = text.split(b"end_header\n", 1)
+assert b"format ascii" in header, "expected an ASCII skeleton"
+n = int(header.decode().split("element vertex ")[1].split()[0])
+lines = body.decode().split("\n")
+degree = collections.Counter()
+for line in lines[n:]:
+    parts = line.split()
+    if len(parts) >= 2:
+        degree[int(parts[0])] += 1
+        degree[int(parts[1])] += 1
+node_of = [int(l) for l in open(sys.argv[2]).read().split()]
+branch_of = [int(l.split(",")[0]) for l in open(sys.argv[3]).read().splitlines()[1:]]
+spread = collections.defaultdict(set)
+for node, branch in zip(node_of, branch_of):
+    if node >= 0 and degree[node] >= 3:
+        spread[node].add(branch)
+assert spread and max(len(s) for s in spread.values()) >= 3, {k: sorted(v) for k, v in spread.items()}
+PY
 # --up and --root: the elephant seen growing from its highest node along z, then from node 0.
 "$PCSKELETON" $M/elephant.off -o elephant_down.ply --branches elephant_down.csv --up 0,0,-1 --quiet
 "$PCSKELETON" $M/elephant.off -o elephant_root.ply --branches elephant_root.csv --root 0 --quiet

@@ -73,6 +73,22 @@ TEST_F(BranchesFilterTest, AYsBranchesAreLoggedAndItsPointsColouredByBranch) {
     EXPECT_EQ(branchNear(vcg::Point3f(0, 0, 0.1)), 0);
     EXPECT_NE(branchNear(vcg::Point3f(-0.45, 0, 1.45)), branchNear(vcg::Point3f(0.55, 0, 1.55)));
     EXPECT_NE(branchNear(vcg::Point3f(-0.45, 0, 1.45)), 0);
+    // The junction's node (above the fork) holds points of both arms: each goes to the branch
+    // of the arm it lies along, not all to the stem that reaches the junction.
+    auto correspondence =
+        vcg::tri::Allocator<CMeshO>::FindPerMeshAttribute<std::vector<int>>(skeleton->cm, "pcs_correspondence");
+    ASSERT_TRUE(vcg::tri::Allocator<CMeshO>::IsValidHandle(skeleton->cm, correspondence));
+    ASSERT_EQ(correspondence().size(), std::size_t(coloured->cm.vn));
+    std::vector<int> degree(std::size_t(skeleton->cm.vn), 0);
+    for (const auto& e : skeleton->cm.edge) {
+        ++degree[std::size_t(vcg::tri::Index(skeleton->cm, e.cV(0)))], ++degree[std::size_t(vcg::tri::Index(skeleton->cm, e.cV(1)))];
+    }
+    std::set<int> atJunctions;
+    for (int i = 0; i < coloured->cm.vn; ++i) {
+        const int n = correspondence()[std::size_t(i)];
+        if (n >= 0 && degree[std::size_t(n)] >= 3) atJunctions.insert(branch[i]);
+    }
+    EXPECT_TRUE(atJunctions.count(1) && atJunctions.count(2)) << "the junction's points are all in branch " << *atJunctions.begin();
 }
 
 TEST_F(BranchesFilterTest, TheTableIsWrittenWhereAskedAndAnExistingFileOnlyWhenTold) {
