@@ -91,7 +91,7 @@ LimbMeasure measureLimbs(const Shape& shape, double noise, std::size_t n, std::u
     PointList points = shapes::tube(shape.curve, shape.radius, n, seed);
     if (noise > 0) points = shapes::withNoise(points, noise, seed);
     const SkeletonResult result = computeCurveSkeleton(points);
-    const SkeletonBranches b = measureBranches(result.skeleton);
+    const SkeletonBranches b = measureBranches(result.skeleton, points);
     double worstLength = 0, worstAngle = 0;
     for (const Limb& limb : shape.limbs) {
         // The shape ends a radius past the curve (the cap).
