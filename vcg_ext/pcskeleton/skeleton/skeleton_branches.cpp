@@ -53,6 +53,12 @@ struct JunctionGroups {
     }
 };
 
+// Where on the segment from `a` to `b` the point nearest `p` lies, from 0 (at a) to 1 (at b).
+double nearestOnSegment(const Point& p, const Point& a, const Point& b) {
+    const Point ab = b - a;
+    return ab.squaredNorm() > 0.0 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
+}
+
 // Whether `p` lies within the tube of a knot of junctions: the ball of one of its junctions
 // or, around one of its inner bones, the radius interpolated along the bone. A split
 // junction's nodes surround its fork at about their radius, so that the fork can lie
@@ -67,10 +73,9 @@ bool withinKnot(const SkeletonGraph& skeleton, const std::vector<std::vector<int
             if (!groups.isInnerBone(bone)) continue;
             for (std::size_t i = 1; i < bone.size(); ++i) {
                 const std::size_t a = std::size_t(bone[i - 1]), b = std::size_t(bone[i]);
-                const Point ab = skeleton.nodes[b] - skeleton.nodes[a];
-                const double t = ab.squaredNorm() > 0.0 ? std::clamp((p - skeleton.nodes[a]).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
+                const double t = nearestOnSegment(p, skeleton.nodes[a], skeleton.nodes[b]);
                 const double radius = (1.0 - t) * skeleton.radii[a] + t * skeleton.radii[b];
-                if ((p - (skeleton.nodes[a] + t * ab)).norm() <= radius) return true;
+                if ((p - ((1.0 - t) * skeleton.nodes[a] + t * skeleton.nodes[b])).norm() <= radius) return true;
             }
         }
     }
@@ -250,10 +255,6 @@ void assignOrders(std::vector<Branch>& branches) {
     }
 }
 
-}  // namespace
-
-namespace {
-
 // The point of a branch's course nearest `p` among its bones within `bones` of the end at
 // `atBase` (its base) or not (its tip): (distance, place along the branch).
 std::pair<double, double> nearestOnCourseEnd(const std::vector<Point>& course, const std::vector<double>& along,
@@ -262,9 +263,8 @@ std::pair<double, double> nearestOnCourseEnd(const std::vector<Point>& course, c
     const std::size_t last = course.size() - 1;
     for (std::size_t k = 0; k < std::min(bones, last); ++k) {
         const std::size_t i = atBase ? k : last - k - 1;  // the bone from course[i] to course[i + 1]
-        const Point ab = course[i + 1] - course[i];
-        const double t = ab.squaredNorm() > 0.0 ? std::clamp((p - course[i]).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
-        const double distance = (p - (course[i] + t * ab)).norm();
+        const double t = nearestOnSegment(p, course[i], course[i + 1]);
+        const double distance = (p - ((1.0 - t) * course[i] + t * course[i + 1])).norm();
         if (distance < best.first) best = {distance, along[i] + t * (along[i + 1] - along[i])};
     }
     return best;
