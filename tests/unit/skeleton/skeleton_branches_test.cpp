@@ -128,10 +128,24 @@ TEST(SkeletonBranches, BranchesAreMeasuredFromWhereTheArmsMeetNotFromTheJunction
     EXPECT_NEAR(branchEndingAt(b, y.longTip).length, 0.6 * std::sqrt(2.0), 0.005);
     EXPECT_NEAR(branchEndingAt(b, y.shortTip).length, 0.3 * std::sqrt(2.0), 0.005);
     EXPECT_NEAR(branchEndingAt(b, y.shortTip).angleToParent, 45.0, 0.5);
-    // Farther than its radius from the lines' meeting point, the node is taken as it lies.
+    // Farther than its radius past the fork, as at a fork whose arms part at a small angle:
+    // the fork still lies in the stem's tube, and the branches are measured from it.
     Fork far;
     far.graph.nodes[std::size_t(far.fork)] += Point(0, 0, 0.15);
-    EXPECT_NEAR(measureBranches(far.graph).branches[0].length, 1.15, 0.01);
+    EXPECT_NEAR(measureBranches(far.graph).branches[0].length, 1.0, 0.01);
+}
+
+TEST(SkeletonBranches, WhereTheArmsLinesMeetOutsideEveryTubeTheJunctionsNodeIsTaken) {
+    // A tuning fork (radius 0.05): two prongs rise from 0.04 either side of the stem's top,
+    // leaning in, so that their lines and the stem's meet at (0, 0, 3), far outside the
+    // stem's, the junction's and the prongs' tubes. The stem ends at the junction's node.
+    SkeletonGraph g = singleNode(Point::Zero(), 0.05);
+    const int junction = addChain(g, 0, Point(0, 0, 1), 20, 0.05);
+    for (double side : {-1.0, 1.0}) {
+        const int foot = addChain(g, junction, Point(0.04 * side, 0, 1), 1, 0.05);
+        addChain(g, foot, Point(0.04 * side, 0, 1) + 0.5 * Point(-0.02 * side, 0, 1), 10, 0.05);
+    }
+    EXPECT_NEAR(measureBranches(g).branches[0].length, 1.0, 1e-9);
 }
 
 TEST(SkeletonBranches, AZigzagOfNodesMeasuresTheBoneNotTheZigzag) {

@@ -59,25 +59,17 @@ double nearestOnSegment(const Point& p, const Point& a, const Point& b) {
     return ab.squaredNorm() > 0.0 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
 }
 
-// Whether `p` lies within the tube of a knot of junctions: the ball of one of its junctions
-// or, around one of its inner bones, the radius interpolated along the bone. A split
-// junction's nodes surround its fork at about their radius, so that the fork can lie
-// outside every one of their balls and still between them.
-bool withinKnot(const SkeletonGraph& skeleton, const std::vector<std::vector<int>>& neighbours,
-                const JunctionGroups& groups, const std::vector<int>& junctions, const Point& p) {
+// Whether `p` lies within the tubes about a junction (or a knot of junctions): the ball of
+// one of its junctions, or the radius (interpolated) about one of `bones`.
+bool withinTubes(const SkeletonGraph& skeleton, const std::vector<int>& junctions, const std::vector<Edge>& bones,
+                 const Point& p) {
     for (int junction : junctions) {
-        const Point& centre = skeleton.nodes[std::size_t(junction)];
-        if ((p - centre).norm() <= skeleton.radii[std::size_t(junction)]) return true;
-        for (int next : neighbours[std::size_t(junction)]) {
-            const std::vector<int> bone = walkChain(neighbours, junction, next);
-            if (!groups.isInnerBone(bone)) continue;
-            for (std::size_t i = 1; i < bone.size(); ++i) {
-                const std::size_t a = std::size_t(bone[i - 1]), b = std::size_t(bone[i]);
-                const double t = nearestOnSegment(p, skeleton.nodes[a], skeleton.nodes[b]);
-                const double radius = (1.0 - t) * skeleton.radii[a] + t * skeleton.radii[b];
-                if ((p - ((1.0 - t) * skeleton.nodes[a] + t * skeleton.nodes[b])).norm() <= radius) return true;
-            }
-        }
+        if ((p - skeleton.nodes[std::size_t(junction)]).norm() <= skeleton.radii[std::size_t(junction)]) return true;
+    }
+    for (const Edge& e : bones) {
+        const Point &a = skeleton.nodes[e[0]], &b = skeleton.nodes[e[1]];
+        const double t = nearestOnSegment(p, a, b);
+        if ((p - ((1.0 - t) * a + t * b)).norm() <= (1.0 - t) * skeleton.radii[e[0]] + t * skeleton.radii[e[1]]) return true;
     }
     return false;
 }
@@ -88,7 +80,11 @@ bool withinKnot(const SkeletonGraph& skeleton, const std::vector<std::vector<int
 // stem is too long and the arms too short (docs/benchmarks.md#branch-measures). Each arm's
 // line is fitted to its nodes from one to kArmLineReach junction radii away (nearer ones
 // lean towards the junction). The junction's node itself when fewer than two arms give a line,
-// or when that point lies outside the knot's tube (withinKnot).
+// or when that point lies outside the tubes the lines were fitted in (withinTubes): the
+// junctions', those of the bones between a knot's junctions and of the arms' bones out to
+// the lines' reach. Where arms part at a small angle their tubes overlap far beyond the
+// fork, and contraction leaves the junction's node there, more than its radius from the
+// fork, which then lies in the parent's tube.
 Point forkPoint(const SkeletonGraph& skeleton, const std::vector<std::vector<int>>& neighbours,
                 const JunctionGroups& groups, const std::vector<int>& junctions) {
     const Point& node = skeleton.nodes[std::size_t(junctions.front())];
@@ -99,17 +95,20 @@ Point forkPoint(const SkeletonGraph& skeleton, const std::vector<std::vector<int
     Eigen::Matrix3d normal = kPull * Eigen::Matrix3d::Identity();
     Point right = kPull * node;
     int lines = 0;
+    std::vector<Edge> tubeBones;  // the knot's inner bones and the arms' bones out to the lines' reach
     for (int junction : junctions) {
         const double radius = skeleton.radii[std::size_t(junction)];
         for (int next : neighbours[std::size_t(junction)]) {
             const std::vector<int> arm = walkChain(neighbours, junction, next);
-            if (groups.isInnerBone(arm)) continue;
+            const bool inner = groups.isInnerBone(arm);
             std::vector<int> far;
             double along = 0.0;
-            for (std::size_t i = 1; i < arm.size() && along <= kArmLineReach * radius; ++i) {
+            for (std::size_t i = 1; i < arm.size() && (inner || along <= kArmLineReach * radius); ++i) {
                 along += (skeleton.nodes[std::size_t(arm[i])] - skeleton.nodes[std::size_t(arm[i - 1])]).norm();
-                if (along >= radius && along <= kArmLineReach * radius) far.push_back(arm[i]);
+                tubeBones.push_back({arm[i - 1], arm[i]});
+                if (!inner && along >= radius && along <= kArmLineReach * radius) far.push_back(arm[i]);
             }
+            if (inner) continue;
             if (far.size() < 2) continue;
             const LocalPlane fit = fitLocalPlane(skeleton.nodes, far);
             const Point direction = fit.axes.col(2);
@@ -122,7 +121,7 @@ Point forkPoint(const SkeletonGraph& skeleton, const std::vector<std::vector<int
     if (lines < 2) return node;
     const Point fork = normal.ldlt().solve(right);
     if (!fork.allFinite()) return node;
-    return withinKnot(skeleton, neighbours, groups, junctions, fork) ? fork : node;
+    return withinTubes(skeleton, junctions, tubeBones, fork) ? fork : node;
 }
 
 JunctionGroups groupJunctions(const SkeletonGraph& skeleton, const std::vector<std::vector<int>>& neighbours) {
