@@ -187,6 +187,7 @@ struct TreeMeasure {
     bool branchesExact = false;
     double length = 0, volume = 0;  // errors in %
     int ordersRight = 0, ordersJudged = 0;
+    std::vector<double> branchLengths;  // each judged branch's length error, in %
 };
 
 TreeMeasure measureTree(double noise, std::size_t n, std::uint32_t seed) {
@@ -207,6 +208,7 @@ TreeMeasure measureTree(double noise, std::size_t n, std::uint32_t seed) {
     double trueLength = 0, length = 0, volume = 0;
     const double trueVolume = tubeVolume(tree, radius);
     int ordersRight = 0, ordersJudged = 0;
+    std::vector<double> branchLengths;
     const std::vector<int> degree = nodeDegrees(exact.nodeCount(), exact.edges);
     for (const Branch& branch : truth.branches) {
         // Tips and the root end a radius past the curve (the cap).
@@ -221,11 +223,16 @@ TreeMeasure measureTree(double noise, std::size_t n, std::uint32_t seed) {
         const int found = b.nodeBranch[nearest];
         ++ordersJudged;
         ordersRight += found >= 0 && b.branches[std::size_t(found)].order == branch.order;
+        if (found >= 0) {
+            const bool tip = degree[std::size_t(branch.nodes.back())] == 1, root = branch.parent < 0;
+            const double truth = branch.length + radius * (int(tip) + int(root));  // caps
+            branchLengths.push_back(100 * (b.branches[std::size_t(found)].length - truth) / truth);
+        }
     }
     trueLength += radius;  // the root's cap
     for (const Branch& branch : b.branches) length += branch.length, volume += branch.volume;
     return {b.branches.size() == truth.branches.size(), 100 * (length - trueLength) / trueLength,
-            100 * (volume - trueVolume) / trueVolume, ordersRight, ordersJudged};
+            100 * (volume - trueVolume) / trueVolume, ordersRight, ordersJudged, branchLengths};
 }
 
 // Curved tubes, held out when the branches' course (fork points, smoothing) was chosen on the
@@ -344,12 +351,21 @@ int main(int argc, char** argv) {
         const Spread length = spread(field(samples, [](const TreeMeasure& m) { return m.length; }));
         const Spread volume = spread(field(samples, [](const TreeMeasure& m) { return m.volume; }));
         int right = 0, judged = 0;
-        for (const TreeMeasure& m : samples) right += m.ordersRight, judged += m.ordersJudged;
-        std::printf("tree   %-6s branch count exact %d/%u; total length %+.1f%% (%+.1f%%), volume %+.1f%% (%+.1f%%); "
-                    "orders right %d/%d, all right in %d/%u\n",
+        std::vector<double> branchErrors;
+        for (const TreeMeasure& m : samples) {
+            right += m.ordersRight, judged += m.ordersJudged;
+            for (double e : m.branchLengths) branchErrors.push_back(std::abs(e));
+        }
+        std::printf("tree   %-6s branch count exact %d/%u; total length %+.1f%% (%+.1f%%) ok %d/%u (target 5%%), "
+                    "volume %+.1f%% (%+.1f%%) ok %d/%u (target 15%%); "
+                    "orders right %d/%d, all right in %d/%u; each branch's length off by %.1f%% (%.1f%%)\n",
                     noise > 0 ? "1%" : "clean", count(samples, [](const TreeMeasure& m) { return m.branchesExact; }),
-                    sampleCount, length.median, length.worst, volume.median, volume.worst, right, judged,
-                    count(samples, [](const TreeMeasure& m) { return m.ordersRight == m.ordersJudged; }), sampleCount);
+                    sampleCount, length.median, length.worst,
+                    count(samples, [](const TreeMeasure& m) { return std::abs(m.length) <= 5.0; }), sampleCount,
+                    volume.median, volume.worst,
+                    count(samples, [](const TreeMeasure& m) { return std::abs(m.volume) <= 15.0; }), sampleCount, right, judged,
+                    count(samples, [](const TreeMeasure& m) { return m.ordersRight == m.ordersJudged; }), sampleCount,
+                    median(branchErrors), *std::max_element(branchErrors.begin(), branchErrors.end()));
     }
     for (bool knot : {false, true}) {
         for (double noise : {0.0, 0.01}) {
