@@ -82,28 +82,33 @@ PointSubsample spreadSubsample(const PointList& points, std::size_t target, cons
         if (occupiedCubes(points, used, stride, Grid(origin, std::exp(middle)), target) > target) fine = middle;
         else coarse = middle;
     }
-    // The stride sample misses some sparse cubes: grow the cube until all points fit.
-    double cellSize = std::exp(coarse);
-    while (occupiedCubes(points, used, 1, Grid(origin, cellSize), target) > target) cellSize *= 1.05;
-    result.cellSize = cellSize;
-
     // Each cube keeps its point nearest to the cube's centroid: a real sample, in the middle,
     // whatever the order of the input (a random point of each cube measured no better:
-    // docs/benchmarks.md#measurements-behind-the-constants).
-    const Grid grid(origin, cellSize);
+    // docs/benchmarks.md#measurements-behind-the-constants). The stride sample misses some
+    // sparse cubes: the cube grows until all points fit, and the pass they fit in is kept.
+    double cellSize = std::exp(coarse);
     std::unordered_map<std::uint64_t, int> cubeOf;
     cubeOf.reserve(2 * target);
     std::vector<int> cubeOfUsed(used.size());
     PointList centroid;
     std::vector<int> members;
-    for (std::size_t u = 0; u < used.size(); ++u) {
-        const Point& p = points[used[u]];
-        const auto [entry, added] = cubeOf.try_emplace(grid.key(p), int(centroid.size()));
-        if (added) centroid.push_back(Point::Zero()), members.push_back(0);
-        cubeOfUsed[u] = entry->second;
-        centroid[entry->second] += p;
-        ++members[entry->second];
+    for (;;) {
+        const Grid grid(origin, cellSize);
+        cubeOf.clear(), centroid.clear(), members.clear();
+        bool fits = true;
+        for (std::size_t u = 0; u < used.size() && fits; ++u) {
+            const Point& p = points[used[u]];
+            const auto [entry, added] = cubeOf.try_emplace(grid.key(p), int(centroid.size()));
+            if (added) centroid.push_back(Point::Zero()), members.push_back(0);
+            cubeOfUsed[u] = entry->second;
+            centroid[entry->second] += p;
+            ++members[entry->second];
+            fits = centroid.size() <= target;
+        }
+        if (fits) break;
+        cellSize *= 1.05;
     }
+    result.cellSize = cellSize;
     std::vector<int> nearest(centroid.size(), -1);
     std::vector<double> nearestDistance(centroid.size(), std::numeric_limits<double>::infinity());
     for (std::size_t c = 0; c < centroid.size(); ++c) centroid[c] /= double(members[c]);
