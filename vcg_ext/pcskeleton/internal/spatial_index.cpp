@@ -53,11 +53,12 @@ std::vector<std::size_t> zOrder(const PointList& points) {
     const double extent = std::max(box.sizes().maxCoeff(), std::numeric_limits<double>::min());
     const double cells = double((1 << 21) - 1) / extent;
     std::vector<std::pair<std::uint64_t, std::size_t>> coded(points.size());
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        const Eigen::Vector3d cell = ((points[i] - box.min()) * cells).cwiseMax(0.0);
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < long(points.size()); ++i) {
+        const Eigen::Vector3d cell = ((points[std::size_t(i)] - box.min()) * cells).cwiseMax(0.0);
         std::uint64_t code = 0;
         for (int axis = 0; axis < 3; ++axis) code |= spreadBits(std::uint64_t(cell[axis])) << axis;
-        coded[i] = {code, i};
+        coded[std::size_t(i)] = {code, std::size_t(i)};
     }
     // (code, index) pairs are distinct: the order is the same on any number of threads.
     parallelSort(coded.begin(), coded.end());
@@ -77,9 +78,9 @@ struct PointIndex::Tree {
         tree.build();  // now, not lazily at the first query: queries may run in parallel
     }
     static std::vector<Point3> makePoints(const PointList& points, const std::vector<std::size_t>& order) {
-        std::vector<Point3> result;
-        result.reserve(points.size());
-        for (std::size_t i : order) result.push_back(toCgal(points[i]));
+        std::vector<Point3> result(order.size());
+#pragma omp parallel for schedule(static)
+        for (long r = 0; r < long(order.size()); ++r) result[std::size_t(r)] = toCgal(points[order[std::size_t(r)]]);
         return result;
     }
     std::vector<std::size_t> order;  // cgalPoints[r] is points[order[r]]
