@@ -283,6 +283,14 @@ Spread spread(std::vector<double> values) {
     return result;
 }
 
+// A measure on samples 1 to `count` (each its own seed).
+template <class Measure>
+auto samplesOf(std::uint32_t count, Measure measure) {
+    std::vector<decltype(measure(1u))> samples;
+    for (std::uint32_t seed = 1; seed <= count; ++seed) samples.push_back(measure(seed));
+    return samples;
+}
+
 template <class Measure, class Field>
 std::vector<double> field(const std::vector<Measure>& samples, Field f) {
     std::vector<double> values;
@@ -321,8 +329,7 @@ int main(int argc, char** argv) {
                 "points right");
     for (const Shape& shape : {yShape(), star()}) {
         for (double noise : {0.0, 0.01}) {
-            std::vector<LimbMeasure> samples;
-            for (std::uint32_t seed = 1; seed <= sampleCount; ++seed) samples.push_back(measureLimbs(shape, noise, n, seed));
+            const auto samples = samplesOf(sampleCount, [&](std::uint32_t seed) { return measureLimbs(shape, noise, n, seed); });
             const Spread length = spread(field(samples, [](const LimbMeasure& m) { return m.worstLength; }));
             const Spread angle = spread(field(samples, [](const LimbMeasure& m) { return m.worstAngle; }));
             const std::vector<double> right = field(samples, [](const LimbMeasure& m) { return m.pointsRight; });
@@ -334,8 +341,7 @@ int main(int argc, char** argv) {
         }
     }
     for (double noise : {0.0, 0.01}) {
-        std::vector<TaperMeasure> samples;
-        for (std::uint32_t seed = 1; seed <= sampleCount; ++seed) samples.push_back(measureTaper(noise, n, seed));
+        const auto samples = samplesOf(sampleCount, [&](std::uint32_t seed) { return measureTaper(noise, n, seed); });
         const std::vector<double> within = field(samples, [](const TaperMeasure& m) { return m.within; });
         const Spread volume = spread(field(samples, [](const TaperMeasure& m) { return m.volume; }));
         const Spread length = spread(field(samples, [](const TaperMeasure& m) { return m.length; }));
@@ -346,8 +352,7 @@ int main(int argc, char** argv) {
                     volume.worst, length.median, length.worst);
     }
     for (double noise : {0.0, 0.01}) {
-        std::vector<TreeMeasure> samples;
-        for (std::uint32_t seed = 1; seed <= sampleCount; ++seed) samples.push_back(measureTree(noise, n, seed));
+        const auto samples = samplesOf(sampleCount, [&](std::uint32_t seed) { return measureTree(noise, n, seed); });
         const Spread length = spread(field(samples, [](const TreeMeasure& m) { return m.length; }));
         const Spread volume = spread(field(samples, [](const TreeMeasure& m) { return m.volume; }));
         int right = 0, judged = 0;
@@ -369,8 +374,7 @@ int main(int argc, char** argv) {
     }
     for (bool knot : {false, true}) {
         for (double noise : {0.0, 0.01}) {
-            std::vector<CurveMeasure> samples;
-            for (std::uint32_t seed = 1; seed <= sampleCount; ++seed) samples.push_back(measureCurve(knot, noise, n, seed));
+            const auto samples = samplesOf(sampleCount, [&](std::uint32_t seed) { return measureCurve(knot, noise, n, seed); });
             const Spread length = spread(field(samples, [](const CurveMeasure& m) { return m.length; }));
             const Spread bones = spread(field(samples, [](const CurveMeasure& m) { return m.bones; }));
             const Spread volume = spread(field(samples, [](const CurveMeasure& m) { return m.volume; }));

@@ -330,8 +330,8 @@ SkeletonBranches measureBranchesOf(const SkeletonGraph& skeleton, const PointLis
                     continue;
                 }
                 branch.closesLoop = reached[branch.nodes.back()];
-                const std::vector<Point> course = courseOf(forks, branch.nodes);
-                courses.push_back(course);
+                courses.push_back(courseOf(forks, branch.nodes));
+                const std::vector<Point>& course = courses.back();
                 const std::vector<double> bones = boneLengths(course);
                 measureShape(branchRadii(skeleton, groups, branch.nodes), course, bones, branch);
                 const Point middle = course[halfway(branch.along)];
