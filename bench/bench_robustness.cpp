@@ -29,8 +29,9 @@
 //        bench_robustness [POINTS] --k N | --denoise N
 //                                       contraction's neighbour count, denoising passes
 //                                       (0 = the defaults' rules, -1 = automatic denoising)
-//        bench_robustness [POINTS] --loop-opening X | --loop-clearance F | --gap-stretch X
-//                                       refinement's narrow-loop limits (opening 0: no cut)
+//        bench_robustness [POINTS] --loop-opening X | --loop-clearance F | --gap-stretch X | --min-hole X
+//                                       refinement's loop limits (opening 0: no cut; hole 0: no
+//                                       loop is filled)
 //        bench_robustness [POINTS] --full-resolution | --contracted-points N
 //                                       every point contracted, or at most N (the
 //                                       multi-resolution pipeline's subsample; default 20000)
@@ -276,7 +277,7 @@ int measurePaperScans(const std::string& folder, const SkeletonParameters& pipel
 const char* const kUsage =
     "usage: bench_robustness [POINTS] [--paper] [--no-refine] [--no-recentre] [--extend-tips] [--no-link-limit]\n"
     "                        [--gap-limit X] [--loop-opening X] [--loop-clearance F] [--full-resolution]\n"
-    "                        [--gap-stretch X] [--k N] [--denoise N]\n"
+    "                        [--gap-stretch X] [--min-hole X] [--k N] [--denoise N]\n"
     "                        [--contracted-points N] [--shape TEXT] [--scans DIR] [--check-invariant]\n"
     "       bench_robustness --outliers [POINTS [ISOLATION [CLUSTER [LOCAL]]]]\n"
     "       bench_robustness --write SHAPE CONDITION FILE [POINTS]\n"
@@ -291,7 +292,8 @@ int main(int argc, char** argv) {
                                       "--outliers",      "--write",             "--contracted-points",
                                       "--shape",         "--gap-limit",         "--loop-opening",
                                       "--loop-clearance", "--k",                 "--denoise",
-                                      "--gap-stretch",   "--scans",             "--check-invariant"};
+                                      "--gap-stretch",   "--scans",             "--check-invariant",
+                                      "--min-hole"};
     for (const std::string& arg : args) {
         if (arg == "--help" || arg == "-h") {
             std::printf("%s", kUsage);
@@ -307,7 +309,7 @@ int main(int argc, char** argv) {
     const bool paper = std::find(args.begin(), args.end(), "--paper") != args.end();
     const std::set<std::string> optionsWithValue{"--contracted-points", "--shape", "--gap-limit", "--loop-opening",
                                                  "--loop-clearance", "--k",                 "--denoise",
-                                                 "--gap-stretch",      "--scans"};
+                                                 "--gap-stretch",      "--scans",         "--min-hole"};
     std::size_t n = 6000;
     std::vector<double> numbers;
     for (std::size_t a = write ? 4 : 0; a < args.size(); ++a) {
@@ -328,6 +330,7 @@ int main(int argc, char** argv) {
     numberAfter("--loop-opening", pipeline.graph.refinementLimits.minOpening);
     numberAfter("--loop-clearance", pipeline.graph.refinementLimits.minClearance);
     numberAfter("--gap-stretch", pipeline.graph.refinementLimits.gapStretch);
+    numberAfter("--min-hole", pipeline.graph.refinementLimits.minHole);
     double neighbours = pipeline.contraction.neighbourCount, denoising = pipeline.contraction.denoisingPasses;
     numberAfter("--k", neighbours);
     numberAfter("--denoise", denoising);

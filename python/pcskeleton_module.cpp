@@ -448,6 +448,7 @@ const char* warningKind(QualityWarning::Kind kind) {
         case QualityWarning::Kind::Spurs: return "spurs";
         case QualityWarning::Kind::SpuriousCycles: return "spurious_cycles";
         case QualityWarning::Kind::ContactLoops: return "contact_loops";
+        case QualityWarning::Kind::FilledLoops: return "filled_loops";
     }
     return "unknown";
 }

@@ -100,7 +100,8 @@ extended=$($GRAPH show elephant.ply | sed 's/.*nodes.: \([0-9]*\).*/\1/')
 
 # Noise joins two of the three rings (bench_robustness's case): refinement opens that loop and
 # says so; without refinement the report warns of it, naming the option; with --loop-opening 0
-# it goes as a bone across the gap between the rings, and --gap-stretch 0 as well keeps it.
+# and --min-hole 0 it goes as a bone across the gap between the rings, and --gap-stretch 0 as
+# well keeps it; with --min-hole only, the hole test opens it (its points fill it).
 RINGS="$HERE/../data/scans/three_rings_noise1_6000.ply"
 "$PCSKELETON" "$RINGS" -o rings.ply 2>rings.log
 $GRAPH check rings.ply --cycles 3 --components 1
@@ -109,13 +110,21 @@ grep -q "cut 1 narrow loop," rings.log || { cat rings.log; fail "the report does
 $GRAPH check rings_unrefined.ply --cycles 4
 grep -q "1 loop is narrower than the tube around them and closed by a bone that crosses the surface" rings_unrefined.log \
   && grep -q "refinement" rings_unrefined.log || { cat rings_unrefined.log; fail "no warning of the loop where rings touch"; }
-"$PCSKELETON" "$RINGS" -o rings_gap.ply --loop-opening 0 2>rings_gap.log
+"$PCSKELETON" "$RINGS" -o rings_gap.ply --loop-opening 0 --min-hole 0 2>rings_gap.log
 $GRAPH check rings_gap.ply --cycles 3
-grep -q "cut 0 narrow loops, 1 stray bridge," rings_gap.log || { cat rings_gap.log; fail "the bone across the gap is not counted"; }
-"$PCSKELETON" "$RINGS" -o rings_kept.ply --loop-opening 0 --gap-stretch 0 --quiet
+grep -q "cut 0 narrow loops, 1 stray bridge, 0 loops over data," rings_gap.log || { cat rings_gap.log; fail "the bone across the gap is not counted"; }
+"$PCSKELETON" "$RINGS" -o rings_kept.ply --loop-opening 0 --gap-stretch 0 --min-hole 0 --quiet
 $GRAPH check rings_kept.ply --cycles 4
+"$PCSKELETON" "$RINGS" -o rings_filled.ply --loop-opening 0 --gap-stretch 0 2>rings_filled.log
+$GRAPH check rings_filled.ply --cycles 3
+grep -q ", 1 loop over data," rings_filled.log || { cat rings_filled.log; fail "the loop over data is not counted"; }
 "$PCSKELETON" "$RINGS" -o rings_bad.ply --gap-stretch 0.5 2>rings_bad.log && fail "--gap-stretch 0.5 was accepted"
 grep -q -- "--gap-stretch" rings_bad.log || { cat rings_bad.log; fail "the refusal does not name --gap-stretch"; }
+"$PCSKELETON" "$RINGS" -o rings_bad.ply --min-hole -1 2>rings_bad.log && fail "--min-hole -1 was accepted"
+grep -q -- "--min-hole" rings_bad.log || { cat rings_bad.log; fail "the refusal does not name --min-hole"; }
+# Without refinement, a loop the points fill is reported as such (the figure eight with 5% outliers).
+"$PCSKELETON" "$HERE/../data/scans/genus2_outliers5_6300.ply" -o eight_unrefined.ply --no-refine 2>eight_unrefined.log
+grep -q "round points rather than a hole" eight_unrefined.log || { cat eight_unrefined.log; fail "no warning of the loop over data"; }
 
 # One node index per input point; the contracted points (binary PLY) read back as input.
 [ "$(wc -l <elephant.nodes)" = 2775 ] || fail "correspondence has $(wc -l <elephant.nodes) lines, expected 2775"
@@ -159,7 +168,7 @@ expected_version="$(sed -n 's/^project(pcskeleton VERSION \([0-9.]*\) .*/\1/p' "
 # --help documents every option with its default.
 "$PCSKELETON" --help >help.txt
 for option in --contracted --correspondence --k --wl --wh --sl --max-wl --max-wh --row-limit --iterations \
-              --threshold --radius --link-limit --gap-limit --loop-opening --loop-clearance --uniform-point-weights --level-set --no-extend-tips --refine --no-refine --no-recentre --keep-outliers --outlier-isolation \
+              --threshold --radius --link-limit --gap-limit --loop-opening --loop-clearance --min-hole --uniform-point-weights --level-set --no-extend-tips --refine --no-refine --no-recentre --keep-outliers --outlier-isolation \
               --outlier-local --outlier-cluster --denoise --contracted-points --full-resolution --memory-limit \
               --paper --report --force --quiet; do
   grep -q -- "$option" help.txt || fail "--help does not document $option"

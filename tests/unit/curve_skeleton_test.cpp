@@ -244,6 +244,33 @@ TEST(CurveSkeleton, AKnotWithLittleNoiseKeepsItsOneLoop) { expectTheKnotsOneLoop
 // by bones across the gaps between them (three false loops; one is opened as a narrow loop).
 TEST(CurveSkeleton, AKnotSampledUnevenlyKeepsItsOneLoop) { expectTheKnotsOneLoop("knot_half_in_10_6000.ply", 2, 4); }
 
+// bench_robustness's figure eight (two holes) with 5% outliers: outliers near the junctions
+// thinned into loops whose own points cover their inside. Refinement opens them (one as a
+// loop over data, which leaves the other a stray bridge); without the hole test they stay,
+// and without refinement the report names the filled one.
+TEST(CurveSkeleton, AFigureEightWithOutliersKeepsItsTwoHolesOnly) {
+    const PointList scan = savedScan("genus2_outliers5_6300.ply");
+    const SkeletonQuality q = computeCurveSkeleton(scan).quality;
+    EXPECT_EQ(q.topology.cycles, 2) << describe(q.topology);
+    ASSERT_TRUE(q.refinement);
+    EXPECT_EQ(q.refinement->filledLoopsCut, 1) << describe(*q.refinement);
+    EXPECT_NE(describe(*q.refinement).find(", 1 loop over data,"), std::string::npos) << describe(*q.refinement);
+
+    SkeletonParameters noHoleTest;
+    noHoleTest.graph.refinementLimits.minHole = 0;
+    EXPECT_EQ(computeCurveSkeleton(scan, noHoleTest).quality.topology.cycles, 4);
+
+    SkeletonParameters unrefined;
+    unrefined.graph.refine = false;
+    const SkeletonQuality raw = computeCurveSkeleton(scan, unrefined).quality;
+    EXPECT_FALSE(raw.filledLoops.empty());
+    const auto warnings = raw.warnings();
+    EXPECT_TRUE(std::any_of(warnings.begin(), warnings.end(),
+                            [](const QualityWarning& w) { return w.kind == QualityWarning::Kind::FilledLoops; }))
+        << describe(raw);
+    EXPECT_TRUE(q.filledLoops.empty()) << "refinement opened it: no warning";
+}
+
 // bench_robustness's two close tubes (surfaces 0.12 apart) with 1% noise: noise put a
 // point in the gap, contraction left it there, and thinning made it a node joining the
 // tubes side by side.
@@ -265,9 +292,11 @@ TEST(CurveSkeleton, NoisyThreeRingsKeepTheirThreeLoopsOnly) {
     ASSERT_TRUE(r.quality.refinement);
     EXPECT_EQ(r.quality.refinement->cyclesCut, 1) << describe(*r.quality.refinement);
 
-    // Left whole as a narrow loop, the loop goes at the bone across the gap between the rings.
+    // Left whole as a narrow loop and by the hole test, the loop goes at the bone across the
+    // gap between the rings.
     SkeletonParameters noNarrowLoop;
     noNarrowLoop.graph.refinementLimits.minOpening = 0;
+    noNarrowLoop.graph.refinementLimits.minHole = 0;
     const SkeletonQuality gap = computeCurveSkeleton(scan, noNarrowLoop).quality;
     EXPECT_EQ(gap.topology.cycles, 3) << describe(gap.topology);
     ASSERT_TRUE(gap.refinement);
@@ -275,6 +304,13 @@ TEST(CurveSkeleton, NoisyThreeRingsKeepTheirThreeLoopsOnly) {
     SkeletonParameters keepEveryLoop = noNarrowLoop;
     keepEveryLoop.graph.refinementLimits.gapStretch = 0;
     EXPECT_EQ(computeCurveSkeleton(scan, keepEveryLoop).quality.topology.cycles, 4);
+    // The hole test alone opens it too: its own points cover its inside.
+    SkeletonParameters holeTestOnly = keepEveryLoop;
+    holeTestOnly.graph.refinementLimits.minHole = RefinementLimits{}.minHole;
+    const SkeletonQuality filled = computeCurveSkeleton(scan, holeTestOnly).quality;
+    EXPECT_EQ(filled.topology.cycles, 3) << describe(filled.topology);
+    ASSERT_TRUE(filled.refinement);
+    EXPECT_EQ(filled.refinement->filledLoopsCut, 1) << describe(*filled.refinement);
 
     // Without refinement the loop stays, and the report says what it probably is.
     SkeletonParameters unrefined;
@@ -306,6 +342,11 @@ TEST(CurveSkeleton, NarrowLoopLimitsMustBeInRange) {
     p.graph.refinementLimits.gapStretch = 0.5;
     EXPECT_THROW(computeCurveSkeleton(cloud, p), InvalidInput);
     p.graph.refinementLimits.gapStretch = std::numeric_limits<double>::infinity();
+    EXPECT_THROW(computeCurveSkeleton(cloud, p), InvalidInput);
+    p = SkeletonParameters();
+    p.graph.refinementLimits.minHole = -0.5;
+    EXPECT_THROW(computeCurveSkeleton(cloud, p), InvalidInput);
+    p.graph.refinementLimits.minHole = std::nan("");
     EXPECT_THROW(computeCurveSkeleton(cloud, p), InvalidInput);
 }
 

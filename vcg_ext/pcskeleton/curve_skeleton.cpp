@@ -67,8 +67,11 @@ void thinAndEmbed(const NormalizedCloud& cloud, const OneRings& rings, const Poi
     const GapBridgingReport bridging = bridgeGaps(result.skeleton, nodeSpacing, parameters.gapLimit);
     result.quality = assessSkeleton(result.skeleton, cloud, rings, contracted, nodeSpacing);
     if (!parameters.refine) {
-        for (ContactLoop& loop : contactLoops(result.skeleton, points, parameters.refinementLimits)) {
+        for (LoopToOpen& loop : contactLoops(result.skeleton, points, parameters.refinementLimits)) {
             result.quality.contactLoops.push_back(std::move(loop.cycle));
+        }
+        for (LoopToOpen& loop : filledLoops(result.skeleton, points, nodeSpacing, parameters.refinementLimits)) {
+            result.quality.filledLoops.push_back(std::move(loop.cycle));
         }
     }
     // Last, once the bones lie where they stay: each is measured across its own direction.
@@ -120,6 +123,10 @@ void checkSkeletonGraphParameters(const SkeletonGraphParameters& parameters) {
         throw InvalidInput(Problem::aboutParameter(
             Parameter::GapStretch, "must be 0 (no bone is cut) or at least 1 (a shorter bone is inside the tubes at its "
                                    "ends)."));
+    }
+    if (!(parameters.refinementLimits.minHole >= 0.0 && std::isfinite(parameters.refinementLimits.minHole))) {
+        throw InvalidInput(Problem::aboutParameter(
+            Parameter::MinHole, "must be 0 (no loop is opened) or a positive number of node spacings."));
     }
     if (!(parameters.nodeSpacing > 0.0 && parameters.nodeSpacing < 1.0)) {
         std::ostringstream requirement;

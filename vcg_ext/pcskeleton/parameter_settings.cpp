@@ -45,6 +45,7 @@ void visitField(Settings& s, Parameter id, Field&& visit) {
         case Parameter::LoopOpening: return visit(t.refinementLimits.minOpening);
         case Parameter::LoopClearance: return visit(t.refinementLimits.minClearance);
         case Parameter::GapStretch: return visit(t.refinementLimits.gapStretch);
+        case Parameter::MinHole: return visit(t.refinementLimits.minHole);
         case Parameter::Resolution: return visit(r.resolution);
         case Parameter::SmoothWeight: return visit(r.smoothWeight);
         case Parameter::SurfaceWeight: return visit(r.surfaceWeight);

@@ -134,3 +134,53 @@ TEST(SkeletonStructure, EveryBoltHoleOfABracketKeepsItsLoop) {
     EXPECT_EQ(analyseTopology(result.skeleton).cycles, 4) << describe(result.quality);
     EXPECT_EQ(analyseTopology(result.skeleton).components, 1);
 }
+
+namespace {
+
+// Each point belongs to the node nearest to it, as thinning would give it.
+void giveEachPointItsNearestNode(SkeletonGraph& g, const PointList& points) {
+    g.pointNode.assign(points.size(), 0);
+    for (std::size_t p = 0; p < points.size(); ++p) {
+        for (std::size_t n = 1; n < g.nodeCount(); ++n) {
+            if ((points[p] - g.nodes[n]).norm() < (points[p] - g.nodes[std::size_t(g.pointNode[p])]).norm()) {
+                g.pointNode[p] = int(n);
+            }
+        }
+    }
+}
+
+}  // namespace
+
+// A ring's loop goes round its hole. The same loop holding the points of a dome over it
+// (a one-view scan of a rounded part contracts to a ring along its rim) goes round data.
+TEST(SkeletonStructure, ALoopRoundItsPointsIsFilledALoopRoundAHoleIsNot) {
+    const shapes::Polyline circle = shapes::circle(Point::Zero(), 1.0, 24);
+    SkeletonGraph ring = shapes::curveSkeleton(circle, 0.2);
+    const PointList tube = shapes::tube(circle, 0.2, 4000);
+    giveEachPointItsNearestNode(ring, tube);
+    const auto cycles = shortCycleBasis(ring);
+    ASSERT_EQ(cycles.size(), 1u);
+    // The tube's inner wall is 0.8 from the centre; the 24-gon's corners cut the circle by 1%.
+    EXPECT_NEAR(emptyDiscRadius(ring, cycles[0], tube, pointsOfNodes(ring)), 0.8, 0.03);
+
+    SkeletonGraph dome = ring;
+    PointList cap;
+    for (int i = 0; i < 60; ++i) {
+        for (int j = 0; j < 60; ++j) {
+            const double x = -1.0 + (i + 0.5) / 30.0, y = -1.0 + (j + 0.5) / 30.0;
+            if (x * x + y * y <= 1.0) cap.emplace_back(x, y, 0.5 * (1.0 - x * x - y * y));
+        }
+    }
+    giveEachPointItsNearestNode(dome, cap);
+    // The cap's points stand on a grid 1/30 apart: the widest empty disc is the grid's cell.
+    EXPECT_LT(emptyDiscRadius(dome, cycles[0], cap, pointsOfNodes(dome)), 0.05);
+
+    constexpr double nodeSpacing = 0.26;  // the 24-gon's bones
+    EXPECT_TRUE(filledLoops(ring, tube, nodeSpacing, RefinementLimits{}).empty());
+    const std::vector<LoopToOpen> filled = filledLoops(dome, cap, nodeSpacing, RefinementLimits{});
+    ASSERT_EQ(filled.size(), 1u);
+    EXPECT_EQ(filled[0].cycle.size(), 24u);
+    RefinementLimits none;
+    none.minHole = 0;
+    EXPECT_TRUE(filledLoops(dome, cap, nodeSpacing, none).empty());
+}

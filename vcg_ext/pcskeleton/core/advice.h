@@ -40,6 +40,7 @@ enum class Parameter {
     LoopOpening,
     LoopClearance,
     GapStretch,
+    MinHole,
     Resolution,
     SmoothWeight,
     SurfaceWeight,

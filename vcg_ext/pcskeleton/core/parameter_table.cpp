@@ -137,6 +137,11 @@ const std::vector<ParameterInfo> kTable = {
      "Refinement cuts a bone that joins two strands straight across the gap between them (on a loop, between "
      "junctions the strands run through) when it is longer than this many times the radii at its two ends "
      "together. Raise it if a real bone is cut; 0 cuts none."},
+    {Parameter::MinHole, "min_hole", V::Real, S::Thinning, kAdvanced, kStraight,
+     "the smallest hole", "Smallest hole (node spacings)", kNotInTheDialogs,
+     "Refinement opens a loop whose inside the data covers: one in which no disc wider than this many node "
+     "spacings (its radius) is free of points (a one-view scan of a rounded part contracts to a ring along its "
+     "rim; parts that touch). Lower it if a real small hole is lost; 0 opens none."},
 
     // ---- Reconstruction (paper Sec. V) ----
     {Parameter::Resolution, "resolution", V::Integer, S::Reconstruction, kCommon, kStraight,

@@ -195,6 +195,13 @@ std::vector<QualityWarning> SkeletonQuality::warnings() const {
                 "probably two parts that touch, or noise across a narrow gap.",
             {Remedy::turnOn(Parameter::Refinement), Remedy::take(Step::DeleteNodes)});
     }
+    if (!filledLoops.empty()) {
+        add(Kind::FilledLoops,
+            counted(filledLoops.size(), "loop goes", "loops go") +
+                " round points rather than a hole (their points cover the inside): probably a one-view scan of a "
+                "rounded part, or a limb touching the body.",
+            {Remedy::turnOn(Parameter::Refinement), Remedy::take(Step::DeleteNodes)});
+    }
     return w;
 }
 

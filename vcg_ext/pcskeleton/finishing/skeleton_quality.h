@@ -41,6 +41,7 @@ struct QualityWarning {
         Spurs,
         SpuriousCycles,
         ContactLoops,
+        FilledLoops,
     };
     Kind kind;
     Problem problem;
@@ -72,6 +73,9 @@ struct SkeletonQuality {
     // Narrow loops whose bone crosses the surface (skeleton_structure.h, contactLoops),
     // sought only when refinement, which opens them, did not run.
     std::vector<std::vector<int>> contactLoops;
+    // Loops whose own points cover their inside (skeleton_structure.h, filledLoops), sought
+    // likewise.
+    std::vector<std::vector<int>> filledLoops;
 
     // The finishing steps; each empty when it was off.
     std::optional<RecenteringReport> recentering;

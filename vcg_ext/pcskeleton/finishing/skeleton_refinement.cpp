@@ -93,15 +93,11 @@ void eraseBone(SkeletonGraph& skeleton, Edge bone) {
     skeleton.edges.erase(std::lower_bound(skeleton.edges.begin(), skeleton.edges.end(), bone));
 }
 
-// Each contact loop (skeleton_structure.h) is opened at its bone. Measured once, on the
-// loops thinning gave: after a cut the basis may pair what is left of a loop with a
-// neighbouring one and measure the two as one narrow loop (the paper's
-// misaligned_scans_0.015 lost a real hole of Fertility that way).
-int cutContactLoops(SkeletonGraph& skeleton, const PointList& points, const RefinementLimits& limits) {
-    normalizeEdges(skeleton.edges);  // sorted, for the searches below
+// Each loop whose bone must go is opened there, if it is still whole: a cut never splits
+// the skeleton. Returns how many were opened.
+int openLoops(SkeletonGraph& skeleton, const std::vector<LoopToOpen>& loops) {
     int cuts = 0;
-    for (const ContactLoop& loop : contactLoops(skeleton, points, limits)) {
-        // Only a loop still whole is opened, so that a cut never splits the skeleton.
+    for (const LoopToOpen& loop : loops) {
         bool whole = true;
         for (std::size_t i = 0; i < loop.cycle.size() && whole; ++i) {
             Edge e{loop.cycle[i], loop.cycle[(i + 1) % loop.cycle.size()]};
@@ -113,6 +109,24 @@ int cutContactLoops(SkeletonGraph& skeleton, const PointList& points, const Refi
         ++cuts;
     }
     return cuts;
+}
+
+// Contact loops, then loops the data fills (skeleton_structure.h), each opened at its bone.
+// Measured once, on the loops thinning gave: after a cut the basis may pair what is left of
+// a loop with a neighbouring one and measure the two as one narrow loop (the paper's
+// misaligned_scans_0.015 lost a real hole of Fertility that way).
+// Returns how many were opened, each counted in `report`.
+int openLoopsWithoutHoles(SkeletonGraph& skeleton, const PointList& points, double nodeSpacing,
+                          const RefinementLimits& limits, RefinementReport& report) {
+    normalizeEdges(skeleton.edges);  // sorted, for the searches in openLoops
+    // Both lists first: the second is measured on the loops thinning gave, too.
+    const std::vector<LoopToOpen> contacts = contactLoops(skeleton, points, limits);
+    const std::vector<LoopToOpen> filled = filledLoops(skeleton, points, nodeSpacing, limits);
+    const int contactCuts = openLoops(skeleton, contacts);
+    const int filledCuts = openLoops(skeleton, filled);
+    report.cyclesCut += contactCuts;
+    report.filledLoopsCut += filledCuts;
+    return contactCuts + filledCuts;
 }
 
 // Bones across gaps (skeleton_structure.h) are cut one at a time, most stretched first: a
@@ -156,7 +170,7 @@ std::string describe(const RefinementReport& r) {
            counted(std::size_t(r.endsTrimmed), "straggling end") + ", collapsed " +
            counted(std::size_t(r.cyclesCollapsed), "small loop") + ", cut " +
            counted(std::size_t(r.cyclesCut), "narrow loop") + ", " + counted(std::size_t(r.bridgesCut), "stray bridge") +
-           ", merged " +
+           ", " + counted(std::size_t(r.filledLoopsCut), "loop") + " over data, merged " +
            counted(std::size_t(r.junctionsMerged), "pair") + " of close junctions";
 }
 
@@ -174,7 +188,7 @@ RefinementReport refineSkeleton(SkeletonGraph& skeleton, const PointList& points
         const int spurs = merge(spurGroups(skeleton, points, nodeSpacing));
         const int ends = merge(stragglingEndGroups(skeleton, nodeSpacing));
         const int cycles = merge(spuriousCycleGroups(skeleton, nodeSpacing));
-        const int cuts = pass == 0 ? cutContactLoops(skeleton, points, refinementLimits) : 0;
+        const int cuts = pass == 0 ? openLoopsWithoutHoles(skeleton, points, nodeSpacing, refinementLimits, report) : 0;
         // Two statements: the bones go first, and the operands of + have no set order.
         const int gapBones = cutBonesAcrossGaps(skeleton, nodeSpacing, refinementLimits.gapStretch);
         const int bridges = gapBones + merge(strayBridgeGroups(skeleton));
@@ -182,7 +196,6 @@ RefinementReport refineSkeleton(SkeletonGraph& skeleton, const PointList& points
         report.spursRemoved += spurs;
         report.endsTrimmed += ends;
         report.cyclesCollapsed += cycles;
-        report.cyclesCut += cuts;
         report.bridgesCut += bridges;
         report.junctionsMerged += junctions;
         if (spurs + ends + cycles + cuts + bridges + junctions == 0) break;

@@ -14,7 +14,10 @@
 //    whose nodes own a handful of points) is cut at its far end, and its nodes are
 //    absorbed into the junction it then hangs from (which keeps its place). A bone across
 //    a gap (straight between two strands whose tubes do not meet along it) is cut; the
-//    report counts it as a stray bridge.
+//    report counts it as a stray bridge. A loop whose own points cover its inside (no
+//    disc wider than RefinementLimits::minHole node spacings free of them: a one-view scan
+//    of a rounded part, a limb touching the body) is opened at its most stretched bone
+//    (skeleton_structure.h, filledLoops).
 // 3. Junctions joined by a path shorter than the node spacing merge into one node at the
 //    path's centre.
 // Repeated until nothing changes, since each step can expose more. Merged nodes keep all
@@ -31,14 +34,15 @@ namespace pcskeleton {
 
 struct RefinementReport {
     int spursRemoved = 0, endsTrimmed = 0, cyclesCollapsed = 0, cyclesCut = 0, bridgesCut = 0, junctionsMerged = 0;
+    int filledLoopsCut = 0;  // loops whose own points cover their inside (filledLoops)
     std::vector<int> nodeMap;  // per node of the skeleton given: the node it became
     bool changedAnything() const {
-        return spursRemoved + endsTrimmed + cyclesCollapsed + cyclesCut + bridgesCut + junctionsMerged > 0;
+        return spursRemoved + endsTrimmed + cyclesCollapsed + cyclesCut + bridgesCut + junctionsMerged + filledLoopsCut > 0;
     }
 };
 
 // "removed 2 spurs, trimmed 0 straggling ends, collapsed 1 small loop, cut 0 narrow loops,
-// 0 stray bridges, merged 0 pairs of close junctions"
+// 0 stray bridges, 1 loop over data, merged 0 pairs of close junctions"
 std::string describe(const RefinementReport& report);
 
 // `nodeSpacing` is the thinning radius, in the skeleton's units; `points` its input points

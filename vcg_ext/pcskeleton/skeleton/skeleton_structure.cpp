@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <functional>
 #include <limits>
+#include <numeric>
 #include <queue>
 
 namespace pcskeleton {
@@ -404,9 +405,9 @@ bool isSheetNode(const PointList& points, const std::vector<int>& own) {
 
 }  // namespace
 
-std::vector<ContactLoop> contactLoops(const SkeletonGraph& graph, const PointList& points,
+std::vector<LoopToOpen> contactLoops(const SkeletonGraph& graph, const PointList& points,
                                       const RefinementLimits& limits) {
-    std::vector<ContactLoop> loops;
+    std::vector<LoopToOpen> loops;
     if (points.empty() || !(limits.minOpening > 0.0)) return loops;
     const std::vector<std::vector<int>> nodePoints = pointsOfNodes(graph);
     for (std::vector<int>& cycle : shortCycleBasis(graph)) {
@@ -418,6 +419,83 @@ std::vector<ContactLoop> contactLoops(const SkeletonGraph& graph, const PointLis
         if (2 * sheetNodes > long(cycle.size())) continue;
         const Edge bone = mostStretchedBone(graph, cycle);
         if (boneGrazesSurface(graph, bone, points, nodePoints, limits.minClearance)) loops.push_back({std::move(cycle), bone});
+    }
+    return loops;
+}
+
+namespace {
+
+// Whether `q` lies inside the closed polygon `corners` (even-odd rule).
+bool insidePolygon(const std::vector<Eigen::Vector2d>& corners, const Eigen::Vector2d& q) {
+    bool inside = false;
+    for (std::size_t i = 0, j = corners.size() - 1; i < corners.size(); j = i++) {
+        const Eigen::Vector2d& a = corners[i];
+        const Eigen::Vector2d& b = corners[j];
+        if ((a.y() > q.y()) != (b.y() > q.y()) && q.x() < a.x() + (b.x() - a.x()) * (q.y() - a.y()) / (b.y() - a.y())) {
+            inside = !inside;
+        }
+    }
+    return inside;
+}
+
+// Disc centres tried across the loop's extent, per side: fine enough that the widest disc is
+// found to a small share of the loop's size.
+constexpr int kDiscCentresPerSide = 150;
+
+}  // namespace
+
+double emptyDiscRadius(const SkeletonGraph& graph, const std::vector<int>& cycle, const PointList& points,
+                       const std::vector<std::vector<int>>& nodePoints) {
+    PointList corners3D;
+    for (int n : cycle) corners3D.push_back(graph.nodes[n]);
+    std::vector<int> everyCorner(corners3D.size());
+    std::iota(everyCorner.begin(), everyCorner.end(), 0);
+    const LocalPlane plane = fitLocalPlane(corners3D, everyCorner);
+    const auto inPlane = [&](const Point& p) {
+        const Point d = p - plane.centroid;
+        return Eigen::Vector2d(d.dot(plane.axes.col(2)), d.dot(plane.axes.col(1)));
+    };
+    std::vector<Eigen::Vector2d> corners;
+    Eigen::Vector2d low = Eigen::Vector2d::Constant(std::numeric_limits<double>::max()), high = -low;
+    for (const Point& c : corners3D) {
+        corners.push_back(inPlane(c));
+        low = low.cwiseMin(corners.back());
+        high = high.cwiseMax(corners.back());
+    }
+    const double extent = (high - low).maxCoeff();
+    if (!(extent > 0.0)) return 0.0;
+    PointList projected;  // in the plane's coordinates, the third one 0 (PointIndex is 3-D)
+    for (int n : cycle) {
+        for (int p : nodePoints[n]) {
+            const Eigen::Vector2d q = inPlane(points[std::size_t(p)]);
+            projected.push_back(Point(q.x(), q.y(), 0.0));
+        }
+    }
+    if (projected.empty()) return extent;
+    const PointIndex index(projected);
+    const double step = extent / kDiscCentresPerSide;
+    double widest = 0.0;
+    std::vector<int> nearest;
+    for (double x = low.x() + 0.5 * step; x < high.x(); x += step) {
+        for (double y = low.y() + 0.5 * step; y < high.y(); y += step) {
+            if (!insidePolygon(corners, Eigen::Vector2d(x, y))) continue;
+            const Point centre(x, y, 0.0);
+            index.nearest(centre, 1, nearest);
+            widest = std::max(widest, (projected[std::size_t(nearest.front())] - centre).norm());
+        }
+    }
+    return widest;
+}
+
+std::vector<LoopToOpen> filledLoops(const SkeletonGraph& graph, const PointList& points, double nodeSpacing,
+                                     const RefinementLimits& limits) {
+    std::vector<LoopToOpen> loops;
+    if (points.empty() || !(limits.minHole > 0.0)) return loops;
+    const std::vector<std::vector<int>> nodePoints = pointsOfNodes(graph);
+    for (std::vector<int>& cycle : shortCycleBasis(graph)) {
+        if (emptyDiscRadius(graph, cycle, points, nodePoints) >= limits.minHole * nodeSpacing) continue;
+        const Edge bone = mostStretchedBone(graph, cycle);
+        loops.push_back({std::move(cycle), bone});
     }
     return loops;
 }

@@ -111,17 +111,34 @@ struct RefinementLimits {
     double minOpening = 1.0;     // in tube radii; 0 = no loop is a contact
     double minClearance = 0.35;  // fraction of the bone's radius
     double gapStretch = 1.15;    // times the two end radii; 0 = no bone crosses a gap
+    double minHole = 1.0;        // node spacings, the radius of a loop's empty disc; 0 = none is filled
 };
 
-struct ContactLoop {
+// A loop without a hole (a contact, or a loop over data) and the bone refinement opens it at.
+struct LoopToOpen {
     std::vector<int> cycle;  // consecutive nodes, as shortCycleBasis gives them
-    Edge bone;               // its most stretched bone, the one that grazes the surface
+    Edge bone;               // its most stretched bone (for a contact, the one that grazes the surface)
 };
 
 // The loops of shortCycleBasis that are narrow (isNarrowCycle) and whose most stretched
 // bone grazes the surface (boneGrazesSurface); `points` are the skeleton's input points.
-std::vector<ContactLoop> contactLoops(const SkeletonGraph& graph, const PointList& points,
+std::vector<LoopToOpen> contactLoops(const SkeletonGraph& graph, const PointList& points,
                                       const RefinementLimits& limits);
+
+// The radius of the widest disc inside a loop that none of its own points covers: the loop's
+// nodes and their points projected on the nodes' best-fit plane, the disc centred inside the
+// projected loop. Around a hole the shape has, the points lie on the tube that goes round it
+// and leave a disc as wide as the hole; where the loop's points cover its inside (a one-view
+// scan of a dome contracts to a ring along its rim; a limb touching the body) only the gaps
+// between samples are left. Only its own points: other parts of the shape may lie in front
+// of a real hole, seen along the loop's axis.
+double emptyDiscRadius(const SkeletonGraph& graph, const std::vector<int>& cycle, const PointList& points,
+                       const std::vector<std::vector<int>>& nodePoints);
+
+// The loops of shortCycleBasis whose empty disc is narrower than `limits.minHole` node
+// spacings: loops the data fills, each with its most stretched bone.
+std::vector<LoopToOpen> filledLoops(const SkeletonGraph& graph, const PointList& points, double nodeSpacing,
+                                     const RefinementLimits& limits);
 
 // Paths (through degree-2 nodes) that join two junctions and are shorter than `nodeSpacing`.
 std::vector<std::vector<int>> closeJunctionPaths(const SkeletonGraph& graph, double nodeSpacing);
