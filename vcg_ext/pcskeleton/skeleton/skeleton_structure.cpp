@@ -438,14 +438,17 @@ bool insidePolygon(const std::vector<Eigen::Vector2d>& corners, const Eigen::Vec
     return inside;
 }
 
-// Disc centres tried across the loop's extent, per side: fine enough that the widest disc is
-// found to a small share of the loop's size.
-constexpr int kDiscCentresPerSide = 150;
+// At most this many disc centres are tried across a loop's extent, per side: a loop hundreds
+// of steps wide is measured a little more coarsely rather than slowly.
+constexpr int kMostDiscCentresPerSide = 150;
+// filledLoops tries disc centres a quarter node spacing apart: each widest disc is found
+// within a fifth of a node spacing, a small share of the limit.
+constexpr double kDiscCentresPerNodeSpacing = 4.0;
 
 }  // namespace
 
 double emptyDiscRadius(const SkeletonGraph& graph, const std::vector<int>& cycle, const PointList& points,
-                       const std::vector<std::vector<int>>& nodePoints) {
+                       const std::vector<std::vector<int>>& nodePoints, double step) {
     PointList corners3D;
     for (int n : cycle) corners3D.push_back(graph.nodes[n]);
     std::vector<int> everyCorner(corners3D.size());
@@ -473,7 +476,7 @@ double emptyDiscRadius(const SkeletonGraph& graph, const std::vector<int>& cycle
     }
     if (projected.empty()) return extent;
     const PointIndex index(projected);
-    const double step = extent / kDiscCentresPerSide;
+    step = std::max(step, extent / kMostDiscCentresPerSide);
     double widest = 0.0;
     std::vector<int> nearest;
     for (double x = low.x() + 0.5 * step; x < high.x(); x += step) {
@@ -493,7 +496,8 @@ std::vector<LoopToOpen> filledLoops(const SkeletonGraph& graph, const PointList&
     if (points.empty() || !(limits.minHole > 0.0)) return loops;
     const std::vector<std::vector<int>> nodePoints = pointsOfNodes(graph);
     for (std::vector<int>& cycle : shortCycleBasis(graph)) {
-        if (emptyDiscRadius(graph, cycle, points, nodePoints) >= limits.minHole * nodeSpacing) continue;
+        const double hole = emptyDiscRadius(graph, cycle, points, nodePoints, nodeSpacing / kDiscCentresPerNodeSpacing);
+        if (hole >= limits.minHole * nodeSpacing) continue;
         const Edge bone = mostStretchedBone(graph, cycle);
         loops.push_back({std::move(cycle), bone});
     }

@@ -131,9 +131,10 @@ std::vector<LoopToOpen> contactLoops(const SkeletonGraph& graph, const PointList
 // and leave a disc as wide as the hole; where the loop's points cover its inside (a one-view
 // scan of a dome contracts to a ring along its rim; a limb touching the body) only the gaps
 // between samples are left. Only its own points: other parts of the shape may lie in front
-// of a real hole, seen along the loop's axis.
+// of a real hole, seen along the loop's axis. Disc centres are tried `step` apart (at most
+// 150 along the loop's extent): the radius found is within step / sqrt(2) of the widest.
 double emptyDiscRadius(const SkeletonGraph& graph, const std::vector<int>& cycle, const PointList& points,
-                       const std::vector<std::vector<int>>& nodePoints);
+                       const std::vector<std::vector<int>>& nodePoints, double step);
 
 // The loops of shortCycleBasis whose empty disc is narrower than `limits.minHole` node
 // spacings: loops the data fills, each with its most stretched bone.
