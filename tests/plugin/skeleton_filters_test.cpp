@@ -5,6 +5,7 @@
 #include "support/sampled_shapes.h"
 #include "support/scan_simulation.h"
 #include <pcskeleton/curve_skeleton.h>
+#include <pcskeleton/io/point_cloud_io.h>
 #include <pcskeleton/io/skeleton_io.h>
 
 #include <QFile>
@@ -370,6 +371,28 @@ TEST_F(SkeletonFilterTest, AGapInTheDataIsBridgedUnlessTheGapLimitIsZero) {
     ASSERT_TRUE(apply(a, p)) << plugin->errorMsg().toStdString();
     EXPECT_EQ(topologyOfLayer(*document.mm()).components, 2);
     EXPECT_TRUE(capture.text(GLLogStream::FILTER).contains("Gaps in the data: off."));
+}
+
+// bench_robustness's figure eight with 5% outliers: a loop goes round its own points, not a
+// hole. Refinement opens it and the log counts it; with Refine unticked the log warns of it.
+TEST_F(SkeletonFilterTest, ALoopOverDataIsOpenedAndCountedOrWarnedOf) {
+    LogCapture capture(plugin);
+    const pcskeleton::PointList scan =
+        pcskeleton::readPointCloud(std::string(PCSKELETON_SCANS_DIR) + "/genus2_outliers5_6300.ply");
+    MeshModel* input = addPointLayer(scan, "figure eight with outliers");
+    QAction* a = action(kSkeletonFilter);
+    RichParameterList p = defaults(a);
+    ASSERT_TRUE(apply(a, p)) << plugin->errorMsg().toStdString();
+    EXPECT_EQ(topologyOfLayer(*document.mm()).cycles, 2);
+    const QString log = capture.text(GLLogStream::FILTER);
+    EXPECT_TRUE(log.contains(", 1 loop over data,")) << log.toStdString();
+    EXPECT_FALSE(capture.text(GLLogStream::WARNING).contains("rather than a hole"));
+
+    document.setCurrentMesh(input->id());
+    p.setValue("refine", BoolValue(false));
+    ASSERT_TRUE(apply(a, p)) << plugin->errorMsg().toStdString();
+    const QString warnings = capture.text(GLLogStream::WARNING);
+    EXPECT_TRUE(warnings.contains("go round points rather than a hole")) << warnings.toStdString();
 }
 
 // Over 5% of the points set aside, the warning's advice names thresholds the dialog leaves
