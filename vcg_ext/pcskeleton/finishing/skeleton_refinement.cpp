@@ -112,18 +112,23 @@ int openLoops(SkeletonGraph& skeleton, const std::vector<LoopToOpen>& loops) {
 }
 
 // Contact loops, then loops the data fills (skeleton_structure.h), each opened at its bone.
-// Measured once, on the loops thinning gave: after a cut the basis may pair what is left of
-// a loop with a neighbouring one and measure the two as one narrow loop (the paper's
-// misaligned_scans_0.015 lost a real hole of Fertility that way).
+// Contacts are measured once, on the loops thinning gave: after a cut the basis may pair
+// what is left of a loop with a neighbouring one and measure the two as one narrow loop (the
+// paper's misaligned_scans_0.015 lost a real hole of Fertility that way).
 // Returns how many were opened, each counted in `report`.
 int openLoopsWithoutHoles(SkeletonGraph& skeleton, const PointList& points, double nodeSpacing,
                           const RefinementLimits& limits, RefinementReport& report) {
     normalizeEdges(skeleton.edges);  // sorted, for the searches in openLoops
-    // Both lists first: the second is measured on the loops thinning gave, too.
-    const std::vector<LoopToOpen> contacts = contactLoops(skeleton, points, limits);
-    const std::vector<LoopToOpen> filled = filledLoops(skeleton, points, nodeSpacing, limits);
-    const int contactCuts = openLoops(skeleton, contacts);
-    const int filledCuts = openLoops(skeleton, filled);
+    const int contactCuts = openLoops(skeleton, contactLoops(skeleton, points, limits));
+    // Then the loops over data, on the skeleton as the contacts left it. Where two of them share
+    // a bone, opening one leaves their union, which goes round the same points: they are
+    // measured again until none is left. (A union with a real hole keeps that hole's empty
+    // disc, and stays.)
+    int filledCuts = 0;
+    for (std::vector<LoopToOpen> filled = filledLoops(skeleton, points, nodeSpacing, limits); !filled.empty();
+         filled = filledLoops(skeleton, points, nodeSpacing, limits)) {
+        filledCuts += openLoops(skeleton, filled);  // the first loop of a basis is whole: at least one
+    }
     report.cyclesCut += contactCuts;
     report.filledLoopsCut += filledCuts;
     return contactCuts + filledCuts;
