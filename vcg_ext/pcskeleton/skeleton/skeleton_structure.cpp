@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <functional>
 #include <limits>
-#include <numeric>
 #include <queue>
 
 namespace pcskeleton {
@@ -449,19 +448,15 @@ constexpr double kDiscCentresPerNodeSpacing = 4.0;
 
 double emptyDiscRadius(const SkeletonGraph& graph, const std::vector<int>& cycle, const PointList& points,
                        const std::vector<std::vector<int>>& nodePoints, double step) {
-    PointList corners3D;
-    for (int n : cycle) corners3D.push_back(graph.nodes[n]);
-    std::vector<int> everyCorner(corners3D.size());
-    std::iota(everyCorner.begin(), everyCorner.end(), 0);
-    const LocalPlane plane = fitLocalPlane(corners3D, everyCorner);
+    const LocalPlane plane = fitLocalPlane(graph.nodes, cycle);
     const auto inPlane = [&](const Point& p) {
         const Point d = p - plane.centroid;
         return Eigen::Vector2d(d.dot(plane.axes.col(2)), d.dot(plane.axes.col(1)));
     };
     std::vector<Eigen::Vector2d> corners;
     Eigen::Vector2d low = Eigen::Vector2d::Constant(std::numeric_limits<double>::max()), high = -low;
-    for (const Point& c : corners3D) {
-        corners.push_back(inPlane(c));
+    for (int n : cycle) {
+        corners.push_back(inPlane(graph.nodes[n]));
         low = low.cwiseMin(corners.back());
         high = high.cwiseMax(corners.back());
     }
