@@ -29,4 +29,17 @@ inline int addNode(SkeletonGraph& g, const Point& p, int connectTo) {
     return n;
 }
 
+// Gives each point to the node nearest to it (the first of equally near ones), as thinning
+// would: replaces g.pointNode.
+inline void giveEachPointItsNearestNode(SkeletonGraph& g, const PointList& points) {
+    g.pointNode.assign(points.size(), 0);
+    for (std::size_t p = 0; p < points.size(); ++p) {
+        for (std::size_t n = 1; n < g.nodeCount(); ++n) {
+            if ((points[p] - g.nodes[n]).squaredNorm() < (points[p] - g.nodes[std::size_t(g.pointNode[p])]).squaredNorm()) {
+                g.pointNode[p] = int(n);
+            }
+        }
+    }
+}
+
 }  // namespace pcskeleton::graphs

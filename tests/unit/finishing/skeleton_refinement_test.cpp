@@ -261,13 +261,7 @@ LoopWithPoints narrowLoopWithPoints(bool touching) {
         bones.push_back({g.nodes[e[0]], g.nodes[e[1]]});
     }
     loop.points = shapes::tube(bones, 0.1, 4000);
-    for (const Point& p : loop.points) {
-        int nearest = 0;
-        for (int n = 1; n < int(g.nodeCount()); ++n) {
-            if ((p - g.nodes[n]).squaredNorm() < (p - g.nodes[nearest]).squaredNorm()) nearest = n;
-        }
-        g.pointNode.push_back(nearest);
-    }
+    giveEachPointItsNearestNode(g, loop.points);
     return loop;
 }
 

@@ -135,22 +135,6 @@ TEST(SkeletonStructure, EveryBoltHoleOfABracketKeepsItsLoop) {
     EXPECT_EQ(analyseTopology(result.skeleton).components, 1);
 }
 
-namespace {
-
-// Each point belongs to the node nearest to it, as thinning would give it.
-void giveEachPointItsNearestNode(SkeletonGraph& g, const PointList& points) {
-    g.pointNode.assign(points.size(), 0);
-    for (std::size_t p = 0; p < points.size(); ++p) {
-        for (std::size_t n = 1; n < g.nodeCount(); ++n) {
-            if ((points[p] - g.nodes[n]).norm() < (points[p] - g.nodes[std::size_t(g.pointNode[p])]).norm()) {
-                g.pointNode[p] = int(n);
-            }
-        }
-    }
-}
-
-}  // namespace
-
 // A ring's loop goes round its hole. The same loop holding the points of a dome over it
 // (a one-view scan of a rounded part contracts to a ring along its rim) goes round data.
 TEST(SkeletonStructure, ALoopRoundItsPointsIsFilledALoopRoundAHoleIsNot) {
