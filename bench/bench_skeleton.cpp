@@ -9,7 +9,11 @@
 // The clouds are generated at run time into a temporary folder (10M points: 240 MB) and
 // deleted afterwards. One child process per step, so each peak is the case's own.
 //
-// usage: bench_skeleton [SIZE ...] [--full-resolution]
+// With --outliers SHARE, that share of the points again is added as outliers spread
+// uniformly over the torus's box (tests/support/scan_simulation.h), and the table counts
+// the outliers that got a node and the torus's points that did not.
+//
+// usage: bench_skeleton [SIZE ...] [--full-resolution] [--outliers SHARE]
 //        default sizes: 10000 100000 1000000 10000000
 #include "run_in_child.h"
 
@@ -17,9 +21,11 @@
 #include <pcskeleton/curve_skeleton.h>
 #include <pcskeleton/io/point_cloud_io.h>
 #include "support/sampled_shapes.h"
+#include "support/scan_simulation.h"
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -42,6 +48,7 @@ struct Row {
     std::size_t contracted = 0;
     int iterations = 0, nodes = 0, cycles = 0;
     bool everyPointHasNode = false;
+    std::size_t surfaceWithoutNode = 0, outliersWithNode = 0;
 };
 
 double peakResidentMegabytes() {
@@ -90,7 +97,8 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-Row runCase(const std::string& file, const SkeletonParameters& parameters) {
+// The torus's points come first in the file, `surfacePoints` of them; the outliers follow.
+Row runCase(const std::string& file, const SkeletonParameters& parameters, std::size_t surfacePoints) {
     Row row;
     const auto start = std::chrono::steady_clock::now();
     const PointList cloud = readPointCloud(file);
@@ -114,6 +122,11 @@ Row runCase(const std::string& file, const SkeletonParameters& parameters) {
     row.cycles = t.cycles;
     row.everyPointHasNode = result.skeleton.pointNode.size() == cloud.size();
     for (int node : result.skeleton.pointNode) row.everyPointHasNode &= node >= 0;
+    for (std::size_t i = 0; i < result.skeleton.pointNode.size(); ++i) {
+        const bool hasNode = result.skeleton.pointNode[i] >= 0;
+        if (i < surfacePoints) row.surfaceWithoutNode += !hasNode;
+        else row.outliersWithNode += hasNode;
+    }
     return row;
 }
 
@@ -123,8 +136,10 @@ int main(int argc, char** argv) {
     pcskeleton::restartWithPassiveOpenMpWaits(argv);
     std::vector<std::size_t> sizes;
     SkeletonParameters parameters;
+    double outlierShare = 0.0;
     for (int a = 1; a < argc; ++a) {
         if (std::strcmp(argv[a], "--full-resolution") == 0) parameters.resolution.maxContractedPoints = 0;
+        else if (std::strcmp(argv[a], "--outliers") == 0 && a + 1 < argc) outlierShare = std::atof(argv[++a]);
         else sizes.push_back(std::strtoull(argv[a], nullptr, 10));
     }
     if (sizes.empty()) sizes = {10000, 100000, 1000000, 10000000};
@@ -139,7 +154,9 @@ int main(int argc, char** argv) {
     std::printf("%9s %8s %7s %7s %8s %8s %8s %6s %6s %5s %8s %6s %6s", "points", "contracted", "read", "subsample",
                 "outliers", "1-rings", "contract", "thin", "finish", "iters", "total", "nodes", "cycles");
     for (const char* stage : kStageNames) std::printf(" %11s", stage);
-    std::printf(" %7s\n", "peak");
+    std::printf(" %7s", "peak");
+    if (outlierShare > 0) std::printf("  outliers with a node, torus points without");
+    std::printf("\n");
     if (!resetPeakResident()) std::printf("(this kernel cannot reset the high-water mark: each stage's peak includes the earlier ones')\n");
     for (std::size_t n : sizes) {
         const std::string file = (folder / ("torus" + std::to_string(n) + ".ply")).string();
@@ -147,13 +164,14 @@ int main(int argc, char** argv) {
         double unused = 0;
         const bool generated = runInChild(
             [&] {
-                writePointCloud(shapes::torus(n, 1.0, 0.3, 7), file);
+                const PointList torus = shapes::torus(n, 1.0, 0.3, 7);
+                writePointCloud(outlierShare > 0 ? shapes::withOutliers(torus, outlierShare, 7) : torus, file);
                 return 1;
             },
             written, unused);
         Row row;
         double peakMegabytes = 0;
-        if (!generated || !runInChild([&] { return runCase(file, parameters); }, row, peakMegabytes)) {
+        if (!generated || !runInChild([&] { return runCase(file, parameters, n); }, row, peakMegabytes)) {
             std::printf("%9zu  failed\n", n);
         } else {
             const StageSeconds& s = row.seconds;
@@ -167,7 +185,12 @@ int main(int argc, char** argv) {
                 else std::printf(" %11s", "-");  // the stage did not run (no subsample below the threshold)
                 wholeRun = std::max(wholeRun, peak);
             }
-            std::printf(" %7.0f%s\n", std::max(wholeRun, peakMegabytes), row.everyPointHasNode ? "" : "  (some points without a node)");
+            std::printf(" %7.0f", std::max(wholeRun, peakMegabytes));
+            if (outlierShare > 0) {
+                const auto outliers = std::size_t(std::round(outlierShare * double(n)));
+                std::printf("  %zu of %zu, %zu", row.outliersWithNode, outliers, row.surfaceWithoutNode);
+            }
+            std::printf("%s\n", row.everyPointHasNode || outlierShare > 0 ? "" : "  (some points without a node)");
         }
         std::filesystem::remove(file);
     }
