@@ -61,6 +61,42 @@ TEST(OutlierDetection, TheRuleIsScaleFree) {
     EXPECT_EQ(findOutliers(scaled, {}), flags);
 }
 
+// A cloud larger than the statistics sample: the tests run on a sample, every other point
+// is judged by the sample's passing points around it. The torus and a real part are kept, a
+// far clump found; of the scattered points, those farther off the surface than the
+// sample's isolation distance (0.3 with a fifth of the points as the sample; with all of
+// them, 0.1) are all found. The answer does not depend on the order of the points.
+TEST(OutlierDetection, ACloudLargerThanTheSampleIsJudgedThroughItWithTheSameAnswers) {
+    PointList cloud = shapes::withOutliers(shapes::torus(40000, 1.0, 0.3), 0.05, 3);
+    const std::size_t torus = 40000, scattered = cloud.size();
+    for (const Point& p : shapes::sphere(2400, 0.15, 5)) cloud.push_back(p + Point(3.0, 0, 0));  // 5%: a part
+    const std::size_t part = cloud.size();
+    for (const Point& p : shapes::sphere(60, 0.05, 7)) cloud.push_back(p + Point(0, 3.0, 0));  // a clump
+    OutlierParameters sampled;
+    sampled.statisticsSample = 8000;
+    const std::vector<char> flags = findOutliers(cloud, sampled);
+    EXPECT_EQ(flaggedIn(flags, 0, torus), 0u);
+    EXPECT_EQ(flaggedIn(flags, scattered, part), 0u);
+    EXPECT_EQ(flaggedIn(flags, part, cloud.size()), 60u);
+    std::size_t far = 0, farFound = 0;
+    for (std::size_t i = torus; i < scattered; ++i) {
+        const Point& p = cloud[i];
+        const double offSurface = std::abs(std::hypot(std::hypot(p.x(), p.y()) - 1.0, p.z()) - 0.3);
+        if (offSurface > 0.3) ++far, farFound += flags[i];
+    }
+    EXPECT_GT(far, 500u);
+    EXPECT_EQ(farFound, far);
+
+    const PointList reversed(cloud.rbegin(), cloud.rend());
+    const std::vector<char> reversedFlags = findOutliers(reversed, sampled);
+    EXPECT_TRUE(std::equal(flags.begin(), flags.end(), reversedFlags.rbegin()));
+
+    // At the sample's size the whole cloud is tested, as below it.
+    OutlierParameters whole;
+    whole.statisticsSample = cloud.size();
+    EXPECT_EQ(flaggedIn(findOutliers(cloud, whole), part, cloud.size()), 60u);
+}
+
 TEST(OutlierDetection, OffOrTooFewPointsFlagsNothing) {
     const PointList cloud = shapes::withOutliers(shapes::torus(3000, 1.0, 0.3), 0.02, 4);
     OutlierParameters off;
@@ -82,6 +118,9 @@ TEST(OutlierDetection, UnusableParametersAreRefusedByName) {
     p = {};
     p.clusterShare = 0.7;
     EXPECT_THROW(findOutliers(shapes::sphere(100, 1.0), p), InvalidInput);
+    p = {};
+    p.statisticsSample = 10;  // no statistics in ten points: a programming error, not input
+    EXPECT_THROW(findOutliers(shapes::sphere(100, 1.0), p), CallerError);
 }
 
 }  // namespace

@@ -4,11 +4,18 @@
 
 #include "pcskeleton/internal/disjoint_sets.h"
 #include "pcskeleton/internal/median.h"
+#include "pcskeleton/internal/parallel_sort.h"
 #include "pcskeleton/internal/spatial_index.h"
+
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <unordered_map>
+#include <utility>
 
 namespace pcskeleton {
 
@@ -19,23 +26,17 @@ namespace {
 constexpr int kNeighbours = 8;
 constexpr int kLocalPasses = 4;
 
-}  // namespace
+struct TestedPoints {
+    std::vector<char> outlier;
+    double reach = 0.0;  // the isolation distance
+};
 
-void checkOutlierParameters(const OutlierParameters& p) {
-    if (!(p.isolationFactor >= 1.0 && std::isfinite(p.isolationFactor)))
-        throw InvalidInput(Problem::aboutParameter(Parameter::OutlierIsolation, "must be a finite number of at least 1 (typical spacings)."));
-    if (!(p.localFactor >= 1.0 && std::isfinite(p.localFactor)))
-        throw InvalidInput(Problem::aboutParameter(Parameter::OutlierLocalFactor, "must be a finite number of at least 1."));
-    if (!(p.clusterShare >= 0.0 && p.clusterShare < 0.5))
-        throw InvalidInput(Problem::aboutParameter(Parameter::OutlierClusterShare, "must be between 0 and 0.5."));
-}
-
-std::vector<char> findOutliers(const PointList& points, const OutlierParameters& parameters) {
-    checkOutlierParameters(parameters);
+// Every point's own k nearest neighbours: the isolation, local and group tests.
+TestedPoints testEveryPoint(const PointList& points, const OutlierParameters& parameters) {
     const std::size_t n = points.size();
-    std::vector<char> outlier(n, 0);
-    if (!parameters.detect || n < 2 * (kNeighbours + 1)) return outlier;
-
+    TestedPoints result;
+    result.outlier.assign(n, 0);
+    if (n < 2 * (kNeighbours + 1)) return result;
     // Everything below runs on ranks along the index's space-filling curve (see
     // spatial_index.h): each point's k nearest neighbours, row by row in one array (k + 1
     // found, the point itself first, which the row leaves out).
@@ -57,9 +58,9 @@ std::vector<char> findOutliers(const PointList& points, const OutlierParameters&
             kthDistance[std::size_t(r)] = (index.pointAtRank(std::size_t(found[kNeighbours - 1])) - p).norm();
         }
     }
-    const double reach = parameters.isolationFactor * median(kthDistance);
+    result.reach = parameters.isolationFactor * median(kthDistance);
     std::vector<char> outlierAt(n);  // by rank
-    for (std::size_t r = 0; r < n; ++r) outlierAt[r] = kthDistance[r] > reach;
+    for (std::size_t r = 0; r < n; ++r) outlierAt[r] = kthDistance[r] > result.reach;
     // The local test compares with the upper quartile of the neighbours' spacing: high
     // enough that the sparse side of a change in density is not taken for outliers, low
     // enough that two outliers side by side do not hide each other. Repeated without the
@@ -82,13 +83,13 @@ std::vector<char> findOutliers(const PointList& points, const OutlierParameters&
         outlierAt = std::move(found);
     }
 
-    // Groups: the remaining points linked to their neighbours within reach.
+    // Groups: the remaining points linked to their neighbours within result.reach.
     DisjointSets groups(n);
     for (std::size_t r = 0; r < n; ++r) {
         if (outlierAt[r]) continue;
         const Point p = index.pointAtRank(r);
         for (auto j = row(r); j != row(r + 1); ++j) {
-            if (!outlierAt[*j] && (index.pointAtRank(std::size_t(*j)) - p).norm() <= reach) groups.unite(int(r), *j);
+            if (!outlierAt[*j] && (index.pointAtRank(std::size_t(*j)) - p).norm() <= result.reach) groups.unite(int(r), *j);
         }
     }
     std::vector<std::size_t> groupSize(n, 0);
@@ -99,9 +100,168 @@ std::vector<char> findOutliers(const PointList& points, const OutlierParameters&
     const double smallest = parameters.clusterShare * double(kept);
     const std::vector<std::size_t>& order = index.spatialOrder();
     for (std::size_t r = 0; r < n; ++r) {
-        outlier[order[r]] = outlierAt[r] || double(groupSize[groups.find(int(r))]) < smallest;
+        result.outlier[order[r]] = outlierAt[r] || double(groupSize[groups.find(int(r))]) < smallest;
+    }
+    return result;
+}
+
+// A pseudo-random choice made from the point's coordinates alone: the same sample whatever
+// the order of the points in the file.
+bool inSample(const Point& p, std::uint64_t below) {
+    std::uint64_t h = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+        std::uint64_t bits;
+        const double c = p[axis];
+        std::memcpy(&bits, &c, sizeof bits);
+        h = (h ^ bits) * 0x9e3779b97f4a7c15ULL;
+        h ^= h >> 29;
+    }
+    h *= 0xbf58476d1ce4e5b9ULL;
+    return (h ^ (h >> 32)) < below;
+}
+
+// How many of some points each cell of a grid holds. Without a usable grid (a zero or too
+// small side for the box) it answers "don't know": no points in a cell, all of them around
+// it, which sends every point to the exact search.
+class CellCounts {
+public:
+    CellCounts(const PointList& points, double side, const Eigen::AlignedBox3d& box)
+        : origin_(box.min() - Point::Constant(side)), side_(side), total_(points.size()) {
+        usable_ = side > 0.0 && (box.sizes().maxCoeff() / side) + 3.0 < double(kCellsPerAxis);
+        if (!usable_) return;
+        for (const Point& p : points) ++counts_[key(cell(p))];
+    }
+    // An order of the cells: row by row, layer by layer.
+    std::uint64_t cellKey(const Point& p) const { return usable_ ? key(cell(p)) : 0; }
+    // Whether at least `k` of the points lie within `radius` of p, counting only whole cells
+    // (p's and the 26 around it) that lie within that radius: false may be wrong, true is not.
+    bool surelyWithin(const Point& p, double radius, std::size_t k) const {
+        if (!usable_) return false;
+        const Eigen::Array3i c = cell(p);
+        std::size_t count = 0;
+        for (int dx = -1; dx <= 1; ++dx)
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dz = -1; dz <= 1; ++dz) {
+                    const Eigen::Array3i n = c + Eigen::Array3i(dx, dy, dz);
+                    const Eigen::Array3d low = origin_.array() + n.cast<double>() * side_;
+                    const Eigen::Array3d high = low + side_;
+                    const Eigen::Array3d farthest = (p.array() - low).abs().max((high - p.array()).abs());
+                    if (farthest.matrix().norm() <= radius && (count += countAt(n)) >= k) return true;
+                }
+        return false;
+    }
+    // The points in p's cell and the 26 around it.
+    std::size_t around(const Point& p) const {
+        if (!usable_) return total_;
+        const Eigen::Array3i c = cell(p);
+        std::size_t count = 0;
+        for (int dx = -1; dx <= 1; ++dx)
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dz = -1; dz <= 1; ++dz) count += countAt(c + Eigen::Array3i(dx, dy, dz));
+        return count;
+    }
+
+private:
+    static constexpr int kCellsPerAxis = 1 << 21;
+    Eigen::Array3i cell(const Point& p) const { return ((p - origin_) / side_).array().floor().cast<int>(); }
+    static std::uint64_t key(const Eigen::Array3i& c) {
+        return std::uint64_t(c[0]) | std::uint64_t(c[1]) << 21 | std::uint64_t(c[2]) << 42;
+    }
+    std::size_t countAt(const Eigen::Array3i& c) const {
+        const auto found = counts_.find(key(c));
+        return found == counts_.end() ? 0 : found->second;
+    }
+    Point origin_;
+    double side_;
+    std::size_t total_;
+    bool usable_ = false;
+    std::unordered_map<std::uint64_t, std::size_t> counts_;
+};
+
+// The tests run on a uniform sample; every other point is an outlier when fewer than k of
+// the sample's passing points lie within the isolation distance of it.
+std::vector<char> testThroughSample(const PointList& points, const OutlierParameters& parameters) {
+    const std::size_t n = points.size();
+    const double share = double(parameters.statisticsSample) / double(n);
+    const auto below = std::uint64_t(share * 18446744073709551615.0);
+    std::vector<char> sampled(n);
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < long(n); ++i) sampled[std::size_t(i)] = inSample(points[std::size_t(i)], below);
+    PointList sample;
+    sample.reserve(std::size_t(1.1 * double(parameters.statisticsSample)));
+    for (std::size_t i = 0; i < n; ++i) {
+        if (sampled[i]) sample.push_back(points[i]);
+    }
+    const TestedPoints tested = testEveryPoint(sample, parameters);
+    PointList passed;
+    for (std::size_t s = 0; s < sample.size(); ++s) {
+        if (!tested.outlier[s]) passed.push_back(sample[s]);
+    }
+    std::vector<char> outlier(n, 0);
+    if (passed.empty()) {
+        for (std::size_t i = 0; i < n; ++i) outlier[i] = 1;
+        return outlier;
+    }
+    // The isolation test again, against the sample: a point is isolated when fewer than k
+    // passing points lie within the isolation distance. Two grids answer for most points
+    // without a search: k passing points in cubes (diagonal: that distance) that lie whole
+    // within that distance of the point are close enough; fewer than k in its 27 cells
+    // (side: that distance) are too few. The rest, points beside the surface, ask the
+    // passing points' index.
+    const Eigen::AlignedBox3d box = boundingBox(points);
+    const CellCounts cubes(passed, tested.reach / std::sqrt(3.0), box);
+    const CellCounts cells(passed, tested.reach, box);
+    std::size_t next = 0;  // the next point of the sample, in input order
+    std::vector<std::size_t> sampleOf(n);
+    for (std::size_t i = 0; i < n; ++i) sampleOf[i] = sampled[i] ? next++ : 0;
+    constexpr char kUndecided = 2;
+#pragma omp parallel for schedule(static)
+    for (long li = 0; li < long(n); ++li) {
+        const std::size_t i = std::size_t(li);
+        const Point& p = points[i];
+        if (sampled[i]) outlier[i] = tested.outlier[sampleOf[i]];
+        else if (cubes.surelyWithin(p, tested.reach, kNeighbours)) outlier[i] = 0;
+        else if (cells.around(p) < std::size_t(kNeighbours)) outlier[i] = 1;
+        else outlier[i] = kUndecided;
+    }
+    // The searches run cell by cell: consecutive ones then touch the same part of the index.
+    std::vector<std::pair<std::uint64_t, std::size_t>> undecided;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (outlier[i] == kUndecided) undecided.emplace_back(cells.cellKey(points[i]), i);
+    }
+    parallelSort(undecided.begin(), undecided.end());
+    const PointIndex passedIndex(passed);
+#pragma omp parallel
+    {
+        std::vector<int> found;
+#pragma omp for schedule(static)
+        for (long u = 0; u < long(undecided.size()); ++u) {
+            const std::size_t i = undecided[std::size_t(u)].second;
+            passedIndex.nearest(points[i], kNeighbours, found);
+            outlier[i] = found.size() < std::size_t(kNeighbours) ||
+                         (passed[std::size_t(found.back())] - points[i]).norm() > tested.reach;
+        }
     }
     return outlier;
+}
+
+}  // namespace
+
+void checkOutlierParameters(const OutlierParameters& p) {
+    if (!(p.isolationFactor >= 1.0 && std::isfinite(p.isolationFactor)))
+        throw InvalidInput(Problem::aboutParameter(Parameter::OutlierIsolation, "must be a finite number of at least 1 (typical spacings)."));
+    if (!(p.localFactor >= 1.0 && std::isfinite(p.localFactor)))
+        throw InvalidInput(Problem::aboutParameter(Parameter::OutlierLocalFactor, "must be a finite number of at least 1."));
+    if (!(p.clusterShare >= 0.0 && p.clusterShare < 0.5))
+        throw InvalidInput(Problem::aboutParameter(Parameter::OutlierClusterShare, "must be between 0 and 0.5."));
+    if (p.statisticsSample < 1000) throw CallerError("OutlierParameters::statisticsSample must be at least 1000");
+}
+
+std::vector<char> findOutliers(const PointList& points, const OutlierParameters& parameters) {
+    checkOutlierParameters(parameters);
+    if (!parameters.detect) return std::vector<char>(points.size(), 0);
+    if (points.size() > parameters.statisticsSample) return testThroughSample(points, parameters);
+    return testEveryPoint(points, parameters).outlier;
 }
 
 }  // namespace pcskeleton

@@ -24,6 +24,15 @@ struct OutlierParameters {
     // Points linked to their neighbours within that distance form groups; a group holding
     // less than this share of the cloud is an outlier cluster.
     double clusterShare = 0.01;
+    // Above this many points the tests run on a uniform sample of about this many, and each
+    // other point is an outlier when fewer than k points of the sample that passed lie
+    // within the sample's isolation distance. The tests ask how far a point stands from the surface
+    // relative to the cloud's spacing, which a sample of millions of points shows as the
+    // whole cloud does, at a fraction of the neighbour searches. What it gives up: outliers
+    // closer to the surface than the sample's isolation distance are kept (they are far
+    // below the contraction's own spacing). A speed setting for library callers, not in
+    // the parameter table; at least 1000.
+    std::size_t statisticsSample = 2'000'000;
 };
 
 // Throws InvalidInput naming the first unusable parameter.
