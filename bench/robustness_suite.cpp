@@ -413,8 +413,12 @@ std::vector<Subject> robustnessSubjects() {
     // genus-0 surface from which only the thumb and the wrist stand out. Its tips are not a
     // known answer (the table expected 6, five fingers and the wrist, until 2026-11-30;
     // the shape has no free fingers to give them), as the elephant's are not.
+    // elephant.off is genus 3 (its Euler characteristic is -4). One handle is plain to see:
+    // the trunk curls back onto the head, leaving a slit about 0.1 long and 0.04 wide; the
+    // other two are smaller. The table expected a tree until 2026-12-03, which hid the
+    // loss of those tunnels.
     const std::map<std::string, std::pair<int, int>> modelTopology{
-        {"elephant", {0, kUnknown}}, {"knot1", {1, 0}}, {"eight", {2, 0}}, {"hand", {0, kUnknown}}};
+        {"elephant", {3, kUnknown}}, {"knot1", {1, 0}}, {"eight", {2, 0}}, {"hand", {0, kUnknown}}};
     const std::set<std::string> heldOutModels{"knot1", "hand"};
     for (const std::string& model : models) {
         const auto [cycles, tips] = modelTopology.at(model);

@@ -20,10 +20,12 @@ $GRAPH check knot.ply --cycles 1 --tips 0 --components 1
 $GRAPH check double.ply --cycles 2 --components 1
 "$PCSKELETON" $M/eight.off -o eight.ply 2>/dev/null
 $GRAPH check eight.ply --cycles 2 --components 1
-# An elephant: a tree with at least four legs, a trunk and a tail.
+# An elephant: one part with at least four legs, a trunk and a tail. The mesh is genus 3
+# (the trunk curls back onto the head, and two smaller handles); the skeleton has at most
+# those 3 loops (its 2775 vertices show none of them to today's pipeline: a known miss).
 "$PCSKELETON" $M/elephant.off -o elephant.ply --contracted elephant_contracted.ply \
   --correspondence elephant.nodes 2>elephant.log
-$GRAPH check elephant.ply --cycles 0 --components 1 --min-tips 6
+$GRAPH check elephant.ply --max-cycles 3 --components 1 --min-tips 6
 
 # The summary line and the quality report on stderr.
 grep -q "^pcskeleton: .*knot.off: 2080 points -> .* 1 cycle, 0 tips" knot.log || { cat knot.log; fail "no summary line"; }
@@ -40,7 +42,8 @@ grep -q "^Warning: Contraction stopped at the iteration limit.*raise --iteration
   || { cat knot_one.txt; fail "--report lacks the iteration-limit warning in the CLI's terms"; }
 
 # Outliers: 2% of the elephant's points scattered in its box; those set aside get no node
-# (-1) and the skeleton stays a tree (the paper's pipeline gives it false loops here);
+# (-1) and the skeleton keeps the loops of the elephant's own (the paper's pipeline gives
+# it 3 here, where the clean vertices give none);
 # --paper and --keep-outliers give every point a node.
 /usr/bin/python3 - "$M/elephant.off" elephant_outliers.xyz <<'PY'
 import random, sys
@@ -58,7 +61,7 @@ with open(sys.argv[2], 'w') as out:
 PY
 "$PCSKELETON" elephant_outliers.xyz -o elephant_outliers.ply --correspondence elephant_outliers.nodes \
   2>elephant_outliers.log
-$GRAPH check elephant_outliers.ply --cycles 0 --components 1
+$GRAPH check elephant_outliers.ply --cycles-as elephant.ply --components 1
 set_aside=$(grep -c '^-1$' elephant_outliers.nodes || true)
 [ "$set_aside" -gt 0 ] || fail "no point of elephant_outliers.xyz was set aside"
 ! grep -qx -- '-1' <<<"$(head -n 2775 elephant_outliers.nodes)" || fail "a point of the elephant itself was set aside"

@@ -4,8 +4,9 @@
 expectations, or checks that two files hold the same graph.
 
   skeleton_graph.py show FILE
-  skeleton_graph.py check FILE [--cycles N] [--components N] [--tips N] [--min-tips N]
-                               [--junctions N] [--min-nodes N]
+  skeleton_graph.py check FILE [--cycles N] [--max-cycles N] [--cycles-as OTHER_FILE]
+                               [--components N] [--tips N] [--min-tips N] [--junctions N]
+                               [--min-nodes N]
   skeleton_graph.py same FILE_A FILE_B
 """
 import argparse
@@ -68,8 +69,9 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("command", choices=["show", "check", "same"])
     parser.add_argument("files", nargs="+")
-    for name in ["cycles", "components", "tips", "min-tips", "junctions", "min-nodes"]:
+    for name in ["cycles", "max-cycles", "components", "tips", "min-tips", "junctions", "min-nodes"]:
         parser.add_argument("--" + name, type=int)
+    parser.add_argument("--cycles-as", help="expect as many cycles as this other skeleton file has")
     args = parser.parse_args()
 
     if args.command == "same":
@@ -90,6 +92,12 @@ def main():
         wanted = getattr(args, key)
         if wanted is not None and t[key] != wanted:
             failures.append(f"{key} = {t[key]}, expected {wanted}")
+    if args.max_cycles is not None and t["cycles"] > args.max_cycles:
+        failures.append(f"cycles = {t['cycles']}, expected at most {args.max_cycles}")
+    if args.cycles_as is not None:
+        other = topology(*read(args.cycles_as))["cycles"]
+        if t["cycles"] != other:
+            failures.append(f"cycles = {t['cycles']}, expected {other} as in {args.cycles_as}")
     if args.min_tips is not None and t["tips"] < args.min_tips:
         failures.append(f"tips = {t['tips']}, expected at least {args.min_tips}")
     if args.min_nodes is not None and t["nodes"] < args.min_nodes:
