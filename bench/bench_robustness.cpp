@@ -46,6 +46,9 @@
 //        bench_robustness [POINTS] --check-invariant
 //                                       exits with 1 if any node of any case (the suite's and the
 //                                       paper's scans) is away from its data (data_support.h)
+//        bench_robustness [POINTS] --seed S
+//                                       the samples' seed (11 by default, as every table in
+//                                       docs/): another seed tells a rule from a lucky sample
 //        bench_robustness --write SHAPE CONDITION FILE [POINTS]
 //                                       writes one case's cloud (.xyz or .ply), e.g. for
 //                                       the pictures in docs/
@@ -119,9 +122,10 @@ double tipGap(const SkeletonGraph& skeleton, const PointList& ends) {
     return sum / ends.size();
 }
 
-Row measure(const Subject& subject, const Condition& condition, std::size_t n, const SkeletonParameters& pipeline) {
-    const PointList cloud = condition.make(subject, n, 11);
-    const double diagonal = boundingBox(subject.sample(n, 11)).diagonal().norm();
+Row measure(const Subject& subject, const Condition& condition, std::size_t n, std::uint32_t seed,
+            const SkeletonParameters& pipeline) {
+    const PointList cloud = condition.make(subject, n, seed);
+    const double diagonal = boundingBox(subject.sample(n, seed)).diagonal().norm();
     // Tip extension is applied here, after the run, so that both tip gaps can be measured.
     SkeletonParameters parameters = pipeline;
     parameters.graph.extendTips = false;
@@ -185,11 +189,11 @@ struct Tally {
 
 // Writes the cloud of one case; returns the exit status.
 int writeCase(const std::vector<Subject>& subjects, const std::string& shape, const std::string& condition,
-              const std::string& file, std::size_t n) {
+              const std::string& file, std::size_t n, std::uint32_t seed) {
     for (const Subject& subject : subjects) {
         for (const Condition& c : conditions()) {
             if (subject.name == shape && c.name == condition) {
-                writePointCloud(c.make(subject, n, 11), file);
+                writePointCloud(c.make(subject, n, seed), file);
                 return 0;
             }
         }
@@ -200,7 +204,8 @@ int writeCase(const std::vector<Subject>& subjects, const std::string& shape, co
 
 // Outlier detection alone, per condition: the share of surface points wrongly flagged and,
 // where outliers were added (appended after the clean sample), the share of them found.
-int outlierDetection(const std::vector<Subject>& subjects, std::size_t n, const OutlierParameters& parameters) {
+int outlierDetection(const std::vector<Subject>& subjects, std::size_t n, std::uint32_t seed,
+                     const OutlierParameters& parameters) {
     std::printf("Outlier detection, isolation factor %.1f, cluster share %.3f, %zu points per clean sample\n",
                 parameters.isolationFactor, parameters.clusterShare, n);
     std::printf("%-16s %22s %22s %8s\n", "condition", "surface points flagged", "outliers found", "time");
@@ -208,9 +213,9 @@ int outlierDetection(const std::vector<Subject>& subjects, std::size_t n, const 
         std::size_t surface = 0, wrong = 0, outliers = 0, found = 0, worstShape = 0;
         double seconds = 0, worst = 0;
         for (std::size_t s = 0; s < subjects.size(); ++s) {
-            const PointList cloud = condition.make(subjects[s], n, 11);
+            const PointList cloud = condition.make(subjects[s], n, seed);
             const bool added = std::string(condition.name).rfind("outliers", 0) == 0;
-            const std::size_t clean = added ? subjects[s].sample(n, 11).size() : cloud.size();
+            const std::size_t clean = added ? subjects[s].sample(n, seed).size() : cloud.size();
             const auto start = std::chrono::steady_clock::now();
             const std::vector<char> flagged = findOutliers(cloud, parameters);
             seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -279,6 +284,7 @@ const char* const kUsage =
     "                        [--gap-limit X] [--loop-opening X] [--loop-clearance F] [--full-resolution]\n"
     "                        [--gap-stretch X] [--min-hole X] [--k N] [--denoise N]\n"
     "                        [--contracted-points N] [--shape TEXT] [--scans DIR] [--check-invariant]\n"
+    "                        [--seed S]\n"
     "       bench_robustness --outliers [POINTS [ISOLATION [CLUSTER [LOCAL]]]]\n"
     "       bench_robustness --write SHAPE CONDITION FILE [POINTS]\n"
     "The table of every shape under every scan defect (the default), the outlier detector's scores, or one\n"
@@ -293,7 +299,7 @@ int main(int argc, char** argv) {
                                       "--shape",         "--gap-limit",         "--loop-opening",
                                       "--loop-clearance", "--k",                 "--denoise",
                                       "--gap-stretch",   "--scans",             "--check-invariant",
-                                      "--min-hole"};
+                                      "--min-hole",      "--seed"};
     for (const std::string& arg : args) {
         if (arg == "--help" || arg == "-h") {
             std::printf("%s", kUsage);
@@ -309,7 +315,8 @@ int main(int argc, char** argv) {
     const bool paper = std::find(args.begin(), args.end(), "--paper") != args.end();
     const std::set<std::string> optionsWithValue{"--contracted-points", "--shape", "--gap-limit", "--loop-opening",
                                                  "--loop-clearance", "--k",                 "--denoise",
-                                                 "--gap-stretch",      "--scans",         "--min-hole"};
+                                                 "--gap-stretch",      "--scans",         "--min-hole",
+                                                 "--seed"};
     std::size_t n = 6000;
     std::vector<double> numbers;
     for (std::size_t a = write ? 4 : 0; a < args.size(); ++a) {
@@ -331,6 +338,9 @@ int main(int argc, char** argv) {
     numberAfter("--loop-clearance", pipeline.graph.refinementLimits.minClearance);
     numberAfter("--gap-stretch", pipeline.graph.refinementLimits.gapStretch);
     numberAfter("--min-hole", pipeline.graph.refinementLimits.minHole);
+    double seedValue = 11;
+    numberAfter("--seed", seedValue);
+    const auto seed = std::uint32_t(seedValue);
     double neighbours = pipeline.contraction.neighbourCount, denoising = pipeline.contraction.denoisingPasses;
     numberAfter("--k", neighbours);
     numberAfter("--denoise", denoising);
@@ -350,17 +360,17 @@ int main(int argc, char** argv) {
     const bool checkInvariant = std::find(args.begin(), args.end(), "--check-invariant") != args.end();
     const std::vector<Subject> subjects = robustnessSubjects();
 
-    if (write) return writeCase(subjects, args[1], args[2], args[3], n);
+    if (write) return writeCase(subjects, args[1], args[2], args[3], n, seed);
     if (outliers) {
         OutlierParameters parameters;
         if (numbers.size() > 1) parameters.isolationFactor = numbers[1];
         if (numbers.size() > 2) parameters.clusterShare = numbers[2];
         if (numbers.size() > 3) parameters.localFactor = numbers[3];
-        return outlierDetection(subjects, n, parameters);
+        return outlierDetection(subjects, n, seed, parameters);
     }
-    std::printf("Skeleton robustness, %s pipeline, %zu points per clean sample, %ld cores. Distances and gaps in %% of "
-                "the bounding-box diagonal.\n",
-                paper ? "the paper's" : "the default", n, sysconf(_SC_NPROCESSORS_ONLN));
+    std::printf("Skeleton robustness, %s pipeline, %zu points per clean sample, seed %u, %ld cores. Distances and gaps "
+                "in %% of the bounding-box diagonal.\n",
+                paper ? "the paper's" : "the default", n, seed, sysconf(_SC_NPROCESSORS_ONLN));
     std::printf("%-24s %-16s %6s %6s %6s %5s %6s %6s %7s %13s %4s %4s %6s\n", "shape", "condition", "points",
                 "cycles", "tips", "parts", "mean d", "max d", "inside", "tip gap", "away", "warn", "time");
     // Per condition, the tuning half ([0]) and the held-out half ([1]).
@@ -371,7 +381,7 @@ int main(int argc, char** argv) {
         for (const Condition& condition : conditions()) {
             Row row;
             double peak = 0;
-            if (!runInChild([&] { return measure(subject, condition, n, pipeline); }, row, peak)) {
+            if (!runInChild([&] { return measure(subject, condition, n, seed, pipeline); }, row, peak)) {
                 std::printf("%-24s %-16s failed\n", subject.name.c_str(), condition.name);
                 continue;
             }
