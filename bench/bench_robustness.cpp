@@ -180,7 +180,7 @@ std::string number(double value, const char* format = "%.2f") {
 }
 
 struct Tally {
-    int cases = 0, right = 0, nearlyRight = 0, gaps = 0, away = 0;
+    int cases = 0, right = 0, nearlyRight = 0, partsRight = 0, gaps = 0, away = 0;
     double gapBefore = 0, gapAfter = 0, meanDistance = 0, inside = 0;
     int distances = 0, insides = 0;
 };
@@ -397,6 +397,7 @@ int main(int argc, char** argv) {
             away += row.away;
             ++t.cases;
             const bool cyclesAndParts = row.cycles == subject.cycles && row.components == subject.components;
+            t.partsRight += row.components == subject.components;
             t.right += cyclesAndParts && (subject.tips == kUnknown || row.tips == subject.tips);
             t.nearlyRight += cyclesAndParts && (subject.tips == kUnknown || std::abs(row.tips - subject.tips) <= 1);
             if (row.gapBefore >= 0) t.gapBefore += row.gapBefore, t.gapAfter += row.gapAfter, ++t.gaps;
@@ -405,18 +406,18 @@ int main(int argc, char** argv) {
         }
     }
     std::printf("\nSummary per condition (means over the shapes that have the measure; right topology: cycles,\n"
-                "parts and tips as the shape's; tips +-1: the same with one tip more or fewer allowed; away: nodes\n"
-                "away from their data, in all). Defaults are chosen on the tuning half; the held-out half tells\n"
+                "parts and tips as the shape's; tips +-1: the same with one tip more or fewer allowed; parts: the\n"
+                "skeleton in as many pieces as the shape; away: nodes away from their data, in all). Defaults are chosen on the tuning half; the held-out half tells\n"
                 "whether they generalise.\n");
     for (int half : {0, 1}) {
         std::printf("%s half\n", half == 0 ? "Tuning" : "Held-out");
-        std::printf("%-16s %13s %9s %8s %8s %15s %5s\n", "condition", "right topology", "tips +-1", "mean d", "inside",
-                    "tip gap", "away");
+        std::printf("%-16s %13s %9s %9s %8s %8s %15s %5s\n", "condition", "right topology", "tips +-1", "parts",
+                    "mean d", "inside", "tip gap", "away");
         for (const Condition& condition : conditions()) {
             const Tally& t = byCondition[condition.name][half];
             if (t.cases == 0) continue;
-            std::printf("%-16s %9d/%-3d %5d/%-3d %8s %7s%% %15s %5d\n", condition.name, t.right, t.cases, t.nearlyRight,
-                        t.cases,
+            std::printf("%-16s %9d/%-3d %5d/%-3d %5d/%-3d %8s %7s%% %15s %5d\n", condition.name, t.right, t.cases,
+                        t.nearlyRight, t.cases, t.partsRight, t.cases,
                         number(t.distances ? t.meanDistance / t.distances : -1).c_str(),
                         number(t.insides ? t.inside / t.insides : -1, "%.0f").c_str(),
                         t.gaps ? (number(t.gapBefore / t.gaps) + "->" + number(t.gapAfter / t.gaps)).c_str() : "-",
