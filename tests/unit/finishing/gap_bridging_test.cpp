@@ -60,7 +60,8 @@ TEST(GapBridging, CollinearPiecesAcrossAGapAreJoinedTipToTip) {
 }
 
 TEST(GapBridging, GapsLongerThanTheLimitAndALimitOfZeroBridgeNothing) {
-    for (double limit : {2.9, 0.0}) {
+    // The tubes' walls (radius half a spacing) are 2.5 spacings apart.
+    for (double limit : {2.4, 0.0}) {
         SkeletonGraph g = brokenChain();
         const GapBridgingReport report = bridgeGaps(g, kSpacing, limit);
         EXPECT_TRUE(report.bridges.empty()) << limit;
@@ -162,4 +163,67 @@ TEST(GapBridging, ANegativeOrInfiniteLimitIsRefused) {
         p.graph.gapLimit = bad;
         EXPECT_THROW(checkSkeletonGraphParameters(p.graph), InvalidInput) << bad;
     }
+}
+
+TEST(GapBridging, TheGapEndsAtTheOtherPiecesWallNotAtItsAxis) {
+    // A thin chain pointing along +x at a thick node 9 spacings ahead of its tip, whose tube
+    // (radius 3 spacings) comes within 6 spacings of it: a gap of 6, inside the limit of 8.
+    for (const double thickRadius : {3 * kSpacing, 0.5 * kSpacing}) {
+        SkeletonGraph g;
+        addChain(g, 0.0, 5);  // tip: node 4 at x 0.4
+        const int thick = addChain(g, 0.4 + 9 * kSpacing, 1);
+        addChain(g, 0.4 + 9 * kSpacing, 1, kSpacing);  // a bone across, so that no node is alone
+        g.edges.push_back({thick, thick + 1});
+        g.radii[std::size_t(thick)] = thickRadius;
+        normalizeEdges(g.edges);
+        const GapBridgingReport report = bridgeGaps(g, kSpacing, 8.0);
+        if (thickRadius > kSpacing) {
+            ASSERT_EQ(report.bridges.size(), 1u) << describe(report);
+            EXPECT_EQ(report.bridges[0], (Edge{4, thick}));
+            EXPECT_NEAR(report.bridgeLengths[0], 9 * kSpacing, 1e-12) << "the bone still ends on the axis";
+        } else {
+            EXPECT_TRUE(report.bridges.empty()) << "a thin piece's wall is 8.5 spacings away";
+        }
+    }
+}
+
+TEST(GapBridging, ALoneNodeJoinsTheNearestPieceWithinTheLimitAndNoFarther) {
+    // A chain along x and one node without a bone below its middle (a foot whose leg is
+    // hidden): joined across a gap of 5 spacings between the tubes, not across one of 12.
+    for (const double below : {6.0, 13.0}) {
+        SkeletonGraph g;
+        addChain(g, 0.0, 9);  // nodes 0-8, radius half a spacing
+        g.nodes.emplace_back(4 * kSpacing, -below * kSpacing, 0);  // node 9
+        g.radii.push_back(0.5 * kSpacing);
+        normalizeEdges(g.edges);
+        const GapBridgingReport report = bridgeGaps(g, kSpacing, 8.0);
+        if (below < 8) {
+            ASSERT_EQ(report.bridges.size(), 1u) << describe(report);
+            EXPECT_EQ(report.bridges[0], (Edge{4, 9}));
+            EXPECT_EQ(g.inferred, report.bridges);
+            EXPECT_EQ(analyseTopology(g).components, 1);
+        } else {
+            EXPECT_TRUE(report.bridges.empty()) << describe(report);
+            EXPECT_EQ(analyseTopology(g).components, 2);
+        }
+    }
+}
+
+TEST(GapBridging, AThinLegHiddenWhereItMeetsAThickBodyJoinsTheBody) {
+    // A body (tube of radius 0.2 along x) on one leg (radius 0.04) whose top 0.25 is hidden:
+    // the leg's piece ends 0.45 below the body's axis, more than the gap limit of 8 node
+    // spacings from it, but only 0.25 from the body's wall.
+    PointList cloud = shapes::tube({{Point(-1, 0, 0), Point(1, 0, 0)}}, 0.2, 12000);
+    for (const Point& p : shapes::tube({{Point(0, 0, -0.2), Point(0, 0, -1.0)}}, 0.04, 3000, 2)) {
+        if (p.z() < -0.45) cloud.push_back(p);
+    }
+    const SkeletonResult result = computeCurveSkeleton(cloud);
+    const SkeletonTopology t = analyseTopology(result.skeleton);
+    EXPECT_EQ(t.components, 1) << describe(t);
+    EXPECT_EQ(t.cycles, 0) << describe(t);
+    EXPECT_EQ(t.tips, 3) << describe(t);
+    ASSERT_EQ(result.skeleton.inferred.size(), 1u);
+    const double nodeSpacing = result.quality.nodeSpacing;
+    ASSERT_TRUE(result.quality.gapBridging);
+    EXPECT_GT(result.quality.gapBridging->bridgeLengths[0], 8 * nodeSpacing) << "a bone longer than the limit";
 }

@@ -4,6 +4,7 @@
 #include "pcskeleton/skeleton/skeleton_structure.h"
 
 #include <algorithm>
+#include <limits>
 #include <sstream>
 #include <tuple>
 
@@ -20,12 +21,36 @@ constexpr std::size_t kDirectionBones = 3;
 constexpr double kAheadCosine = 0.7;
 
 struct Candidate {
-    double length;
-    int tip, node;
+    double length;  // of the bone, node to node
+    int from, node;
     bool operator<(const Candidate& other) const {
-        return std::tie(length, tip, node) < std::tie(other.length, other.tip, other.node);
+        return std::tie(length, from, node) < std::tie(other.length, other.from, other.node);
     }
 };
+
+double tubeRadius(const SkeletonGraph& skeleton, std::size_t node) {
+    return node < skeleton.radii.size() ? skeleton.radii[node] : 0.0;
+}
+
+// The nearest node of another piece than `from`'s whose tube is at most `maxGap` away;
+// only nodes ahead of `outward` when it is given. `fromRadius` is how far `from`'s own
+// data reaches towards it. The hole in the data ends at the other piece's wall, not at its
+// axis: a thin leg hidden where it meets a thick body is as far from the body's axis as
+// the body is thick, however short the hidden stretch. The bone goes to the nearest such
+// node, as a bone between two tips of one tube goes tip to tip. node -1: none.
+Candidate nearestAcrossGap(const SkeletonGraph& skeleton, const std::vector<int>& component, int from,
+                           double fromRadius, double maxGap, const Point* outward) {
+    Candidate nearest{std::numeric_limits<double>::infinity(), from, -1};
+    for (std::size_t n = 0; n < skeleton.nodeCount(); ++n) {
+        if (component[n] == component[std::size_t(from)]) continue;
+        const Point toNode = skeleton.nodes[n] - skeleton.nodes[std::size_t(from)];
+        const double length = toNode.norm();
+        const double gap = std::max(0.0, length - tubeRadius(skeleton, n) - fromRadius);
+        const bool ahead = !outward || toNode.dot(*outward) >= kAheadCosine * length;
+        if (gap <= maxGap && length < nearest.length && length > 0.0 && ahead) nearest = {length, from, int(n)};
+    }
+    return nearest;
+}
 
 }  // namespace
 
@@ -55,23 +80,28 @@ GapBridgingReport bridgeGaps(SkeletonGraph& skeleton, double nodeSpacing, double
         Point outward = skeleton.nodes[tip] - skeleton.nodes[back];
         if (outward.norm() == 0.0) continue;
         outward.normalize();
-        Candidate nearest{maxLength, -1, -1};
-        for (std::size_t n = 0; n < skeleton.nodeCount(); ++n) {
-            if (component[n] == component[tip]) continue;
-            const Point toNode = skeleton.nodes[n] - skeleton.nodes[tip];
-            const double length = toNode.norm();
-            if (length <= nearest.length && length > 0.0 && toNode.dot(outward) >= kAheadCosine * length) {
-                nearest = {length, tip, int(n)};
-            }
-        }
+        // A tip ends at the edge of its data (tip extension comes first): its own tube
+        // reaches no farther.
+        const Candidate nearest = nearestAcrossGap(skeleton, component, tip, 0.0, maxLength, &outward);
         if (nearest.node >= 0) candidates.push_back(nearest);
     }
 
-    // Shortest first, and only between pieces still apart: a bridge never closes a cycle.
+    // A piece of data that thinned to a single node (a foot whose leg is hidden, a patch
+    // seen between occluders) has no direction to look along: it joins the piece whose
+    // tube comes nearest its own, across the same limit.
+    const std::vector<int> degrees = nodeDegrees(skeleton.nodeCount(), skeleton.edges);
+    for (std::size_t lone = 0; lone < skeleton.nodeCount(); ++lone) {
+        if (degrees[lone] != 0) continue;
+        const Candidate nearest =
+            nearestAcrossGap(skeleton, component, int(lone), tubeRadius(skeleton, lone), maxLength, nullptr);
+        if (nearest.node >= 0) candidates.push_back(nearest);
+    }
+
+    // Nearest first, and only between pieces still apart: a bridge never closes a cycle.
     std::sort(candidates.begin(), candidates.end());
     for (const Candidate& c : candidates) {
-        if (!pieces.unite(c.tip, c.node)) continue;
-        report.bridges.push_back({std::min(c.tip, c.node), std::max(c.tip, c.node)});
+        if (!pieces.unite(c.from, c.node)) continue;
+        report.bridges.push_back({std::min(c.from, c.node), std::max(c.from, c.node)});
         report.bridgeLengths.push_back(c.length);
     }
     skeleton.edges.insert(skeleton.edges.end(), report.bridges.begin(), report.bridges.end());
