@@ -5,7 +5,9 @@ usage: render_points.py [--view ELEVATION,AZIMUTH] OUT.png TITLE FILE[:LABEL] [F
 Each file gets its own panel, all seen from the same viewpoint (degrees; 20,-60 unless
 given) and scale; the first
 file is drawn faintly behind the others so that they can be compared with it. A PLY
-file with an edge element is drawn as a skeleton: its edges as lines, nodes as dots.
+file with an edge element is drawn as a skeleton: its edges as lines, nodes as dots;
+inferred bones (the edge property `inferred` 1: a gap in the data bridged) dashed magenta,
+as the Edit Skeleton tool draws them.
 """
 import sys
 
@@ -17,17 +19,29 @@ import numpy as np  # noqa: E402
 
 
 def read_edges(path):
-    """The (a, b) vertex pairs of an ASCII PLY's edge element (elements in file order)."""
+    """The (a, b, inferred) triples of an ASCII PLY's edge element (elements in file order;
+    inferred False where the file has no such property)."""
     with open(path, "r", errors="replace") as f:
         lines = f.read().splitlines()
     if not lines or lines[0].strip() != "ply":
         return []
     end = lines.index("end_header")
-    elements = [(l.split()[1], int(l.split()[2])) for l in lines[:end] if l.startswith("element")]
+    elements = []  # (name, count, property names)
+    for line in lines[:end]:
+        words = line.split()
+        if words[:1] == ["element"]:
+            elements.append((words[1], int(words[2]), []))
+        elif words[:1] == ["property"] and elements:
+            elements[-1][2].append(words[-1])
     row = end + 1
-    for name, count in elements:
+    for name, count, properties in elements:
         if name == "edge":
-            return [tuple(int(v) for v in l.split()[:2]) for l in lines[row:row + count]]
+            flag = properties.index("inferred") if "inferred" in properties else None
+            edges = []
+            for line in lines[row:row + count]:
+                values = [int(v) for v in line.split()]
+                edges.append((values[0], values[1], flag is not None and values[flag] == 1))
+            return edges
         row += count
     return []
 
@@ -78,8 +92,11 @@ def main():
             reference = clouds[0][0]
             ax.scatter(*reference.T, s=0.5, c="lightgray", alpha=0.25, depthshade=False)
             if edges:
-                for a, b in edges:
-                    ax.plot(*points[[a, b]].T, color="crimson", linewidth=2)
+                for a, b, inferred in edges:
+                    if inferred:
+                        ax.plot(*points[[a, b]].T, color="magenta", linewidth=2, linestyle="--")
+                    else:
+                        ax.plot(*points[[a, b]].T, color="crimson", linewidth=2)
                 ax.scatter(*points.T, s=8, c="black", depthshade=False)
             else:
                 ax.scatter(*points.T, s=2.5, c="crimson", depthshade=False)
@@ -89,6 +106,9 @@ def main():
         ax.view_init(elev=elevation, azim=azimuth)
         ax.set_axis_off()
         count = f"{len(points)} nodes, {len(edges)} edges" if edges else f"{len(points)} points"
+        inferred = sum(1 for edge in edges if edge[2])
+        if inferred:
+            count += f" ({inferred} inferred, dashed)"
         ax.set_title(f"{label}\n{count}")
     fig.tight_layout(rect=(0, 0, 1, 0.93))
     fig.savefig(out)

@@ -44,6 +44,8 @@ VIEW=90,-90 picture one-view-recentring "One-view scan: the paper's nodes hug th
   "ring" "scan 1 view" "--paper|--paper" "--no-recentre|--no-recentre" "default|"
 picture one-view-gaps "One-view scan: hidden stretches leave the skeleton in pieces; gap bridging (on by default) joins them" \
   "elephant (libcgal-demo)" "scan 1 view" "--gap-limit 0|--gap-limit 0" "default|"
+picture one-view-thin-legs "One-view scan: a thin leg hidden where it meets a thick body is joined across the gap to the body's wall" \
+  "thin legs, thick body" "1 view, side" "--gap-limit 0|--gap-limit 0" "default|"
 VIEW=90,-90 picture loops-over-data "Loops round points, not holes: refinement (on by default) opens them; --min-hole 0 keeps them" \
   "genus 2 (figure eight)" "outliers 5%" "--min-hole 0|--min-hole 0" "default|"
 
