@@ -87,8 +87,8 @@ GapBridgingReport bridgeGaps(SkeletonGraph& skeleton, double nodeSpacing, double
     }
 
     // A piece of data that thinned to a single node (a foot whose leg is hidden, a patch
-    // seen between occluders) has no direction to look along: it joins the piece whose
-    // tube comes nearest its own, across the same limit.
+    // seen between occluders) has no direction to look along: it joins the nearest node
+    // of a piece whose tube comes within the same limit of its own, in any direction.
     const std::vector<int> degrees = nodeDegrees(skeleton.nodeCount(), skeleton.edges);
     for (std::size_t lone = 0; lone < skeleton.nodeCount(); ++lone) {
         if (degrees[lone] != 0) continue;
