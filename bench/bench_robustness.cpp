@@ -407,8 +407,8 @@ int main(int argc, char** argv) {
     }
     std::printf("\nSummary per condition (means over the shapes that have the measure; right topology: cycles,\n"
                 "parts and tips as the shape's; tips +-1: the same with one tip more or fewer allowed; parts: the\n"
-                "skeleton in as many pieces as the shape; away: nodes away from their data, in all). Defaults are chosen on the tuning half; the held-out half tells\n"
-                "whether they generalise.\n");
+                "skeleton in as many pieces as the shape; away: nodes away from their data, in all). Defaults are\n"
+                "chosen on the tuning half; the held-out half tells whether they generalise.\n");
     for (int half : {0, 1}) {
         std::printf("%s half\n", half == 0 ? "Tuning" : "Held-out");
         std::printf("%-16s %13s %9s %9s %8s %8s %15s %5s\n", "condition", "right topology", "tips +-1", "parts",

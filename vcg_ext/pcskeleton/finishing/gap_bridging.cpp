@@ -28,10 +28,6 @@ struct Candidate {
     }
 };
 
-double tubeRadius(const SkeletonGraph& skeleton, std::size_t node) {
-    return node < skeleton.radii.size() ? skeleton.radii[node] : 0.0;
-}
-
 // The nearest node of another piece than `from`'s whose tube is at most `maxGap` away;
 // only nodes ahead of `outward` when it is given. `fromRadius` is how far `from`'s own
 // data reaches towards it. The hole in the data ends at the other piece's wall, not at its
@@ -45,7 +41,7 @@ Candidate nearestAcrossGap(const SkeletonGraph& skeleton, const std::vector<int>
         if (component[n] == component[std::size_t(from)]) continue;
         const Point toNode = skeleton.nodes[n] - skeleton.nodes[std::size_t(from)];
         const double length = toNode.norm();
-        const double gap = std::max(0.0, length - tubeRadius(skeleton, n) - fromRadius);
+        const double gap = std::max(0.0, length - skeleton.radii[n] - fromRadius);
         const bool ahead = !outward || toNode.dot(*outward) >= kAheadCosine * length;
         if (gap <= maxGap && length < nearest.length && length > 0.0 && ahead) nearest = {length, from, int(n)};
     }
@@ -71,7 +67,7 @@ GapBridgingReport bridgeGaps(SkeletonGraph& skeleton, double nodeSpacing, double
     for (const Edge& e : skeleton.edges) pieces.unite(e[0], e[1]);
     std::vector<int> component(skeleton.nodeCount());  // each node's piece before any bridge
     for (std::size_t n = 0; n < component.size(); ++n) component[n] = pieces.find(int(n));
-    const double maxLength = gapLimit * nodeSpacing;
+    const double maxGap = gapLimit * nodeSpacing;
 
     std::vector<Candidate> candidates;
     for (const Limb& limb : tipLimbs(skeleton)) {
@@ -82,7 +78,7 @@ GapBridgingReport bridgeGaps(SkeletonGraph& skeleton, double nodeSpacing, double
         outward.normalize();
         // A tip ends at the edge of its data (tip extension comes first): its own tube
         // reaches no farther.
-        const Candidate nearest = nearestAcrossGap(skeleton, component, tip, 0.0, maxLength, &outward);
+        const Candidate nearest = nearestAcrossGap(skeleton, component, tip, 0.0, maxGap, &outward);
         if (nearest.node >= 0) candidates.push_back(nearest);
     }
 
@@ -93,7 +89,7 @@ GapBridgingReport bridgeGaps(SkeletonGraph& skeleton, double nodeSpacing, double
     for (std::size_t lone = 0; lone < skeleton.nodeCount(); ++lone) {
         if (degrees[lone] != 0) continue;
         const Candidate nearest =
-            nearestAcrossGap(skeleton, component, int(lone), tubeRadius(skeleton, lone), maxLength, nullptr);
+            nearestAcrossGap(skeleton, component, int(lone), skeleton.radii[lone], maxGap, nullptr);
         if (nearest.node >= 0) candidates.push_back(nearest);
     }
 

@@ -5,10 +5,10 @@
 // tip to the nearest node of that piece inside the limb's cone. The gap is the empty space
 // between them: from the tip to the other piece's wall, not its axis (a thin limb hidden
 // where it meets a thick body). A piece that thinned to a single node has no limb to look
-// along and joins the nearest piece. Pieces that lie side
-// by side (two separate objects, two close parallel tubes) are not ahead of any tip and
-// stay apart. The bones added are marked as inferred (SkeletonGraph::inferred). Not the paper's
-// step; on by default (SkeletonGraphParameters::gapLimit says why).
+// along and joins the nearest piece. Pieces that lie side by side (two separate objects,
+// two close parallel tubes) are not ahead of any tip and stay apart. The bones added are
+// marked as inferred (SkeletonGraph::inferred). Not the paper's step; on by default
+// (SkeletonGraphParameters::gapLimit says why).
 #pragma once
 
 #include "pcskeleton/skeleton/skeleton_graph.h"
