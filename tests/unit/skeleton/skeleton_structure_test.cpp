@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 using namespace pcskeleton;
 using namespace pcskeleton::graphs;
@@ -167,4 +168,84 @@ TEST(SkeletonStructure, ALoopRoundItsPointsIsFilledALoopRoundAHoleIsNot) {
     RefinementLimits none;
     none.minHole = 0;
     EXPECT_TRUE(filledLoops(dome, cap, nodeSpacing, none).empty());
+}
+
+namespace {
+
+// A ring of radius 1 and tube radius 0.2 in the z = 0 plane (node 0 at (1, 0, 0), node 12 at
+// (-1, 0, 0)), with a limb from node 0 through `path`, 0.1 apart.
+SkeletonGraph ringWithLimb(const std::vector<Point>& path) {
+    SkeletonGraph g = shapes::curveSkeleton(shapes::circle(Point::Zero(), 1.0, 24), 0.2);
+    int last = 0;
+    for (const Point& p : path) last = graphs::addNode(g, p, last);
+    return g;
+}
+
+// The points from `from` to `to`, 0.1 apart, `from` excluded.
+std::vector<Point> steps(const Point& from, const Point& to) {
+    std::vector<Point> path;
+    const int count = int(std::lround((to - from).norm() / 0.1));
+    for (int i = 1; i <= count; ++i) path.push_back(from + (to - from) * double(i) / count);
+    return path;
+}
+
+std::vector<Point> operator+(std::vector<Point> a, const std::vector<Point>& b) {
+    a.insert(a.end(), b.begin(), b.end());
+    return a;
+}
+
+}  // namespace
+
+// From one view, a limb in front of a body hides the body behind it and contraction rings
+// the shadow: a loop with a limb across its hole (inside its outline, off its plane by more
+// than its radius) is not a hole the data shows. A limb beside the ring, a single node over
+// it, one in its plane (a knob into a real hole), a separate part in front and another loop's
+// strands do not count.
+TEST(SkeletonStructure, ALoopWithALimbAcrossItsHoleIsNotAHole) {
+    const PointList tube = shapes::tube(shapes::circle(Point::Zero(), 1.0, 24), 0.2, 4000);
+    const auto loopOf = [](const SkeletonGraph& g) {
+        const auto cycles = shortCycleBasis(g);
+        EXPECT_EQ(cycles.size(), 1u);
+        return cycles.empty() ? std::vector<int>{} : cycles[0];
+    };
+
+    const Point base(1, 0, 0), above(1.1, 0, 0.5);
+    // Up beside the ring, then 0.5 above it to its centre.
+    const SkeletonGraph across = ringWithLimb(steps(base, above) + steps(above, Point(0, 0, 0.5)));
+    EXPECT_TRUE(partAcrossLoop(across, loopOf(across)));
+    SkeletonGraph withPoints = across;
+    graphs::giveEachPointItsNearestNode(withPoints, tube);
+    constexpr double nodeSpacing = 0.26;  // the 24-gon's bones
+    const std::vector<LoopToOpen> opened = filledLoops(withPoints, tube, nodeSpacing, RefinementLimits{});
+    ASSERT_EQ(opened.size(), 1u) << "the ring's own points leave its hole empty: the limb alone opens it";
+    RefinementLimits none;
+    none.minHole = 0;
+    EXPECT_TRUE(filledLoops(withPoints, tube, nodeSpacing, none).empty());
+
+    const SkeletonGraph beside = ringWithLimb(steps(base, above) + steps(above, Point(1.6, 0, 0.5)));
+    EXPECT_FALSE(partAcrossLoop(beside, loopOf(beside)));
+    // One node over the hole is no limb (outliers grow such spurs).
+    const SkeletonGraph oneNode = ringWithLimb(steps(base, above) + std::vector<Point>{Point(0.9, 0, 0.5)});
+    EXPECT_FALSE(partAcrossLoop(oneNode, loopOf(oneNode)));
+    const SkeletonGraph knob = ringWithLimb(steps(base, Point(0.5, 0, 0)));  // into the hole, in its plane
+    EXPECT_FALSE(partAcrossLoop(knob, loopOf(knob)));
+
+    // A separate part 0.5 above the ring, across its hole.
+    SkeletonGraph apart = shapes::curveSkeleton(shapes::circle(Point::Zero(), 1.0, 24), 0.2);
+    apart.nodes.emplace_back(-0.5, 0.0, 0.5);  // not joined to the ring
+    apart.radii.push_back(0.2);
+    int last = int(apart.nodeCount()) - 1;
+    for (const Point& p : steps(apart.nodes.back(), Point(0.5, 0.0, 0.5))) last = graphs::addNode(apart, p, last);
+    EXPECT_FALSE(partAcrossLoop(apart, loopOf(apart)));
+
+    // A second loop of the same part over the first one's hole (as a knot's strands cross):
+    // the limb closed back onto the ring through a node above its far side.
+    const Point farAbove(-1.1, 0, 0.5);
+    SkeletonGraph twoLoops = ringWithLimb(steps(base, above) + steps(above, farAbove) +
+                                          steps(farAbove, Point(-1.1, 0, 0.1)));
+    twoLoops.edges.push_back({12, int(twoLoops.nodeCount()) - 1});
+    normalizeEdges(twoLoops.edges);
+    const auto cycles = shortCycleBasis(twoLoops);
+    ASSERT_EQ(cycles.size(), 2u);
+    for (const auto& cycle : cycles) EXPECT_FALSE(partAcrossLoop(twoLoops, cycle));
 }

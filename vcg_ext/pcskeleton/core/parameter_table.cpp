@@ -142,7 +142,8 @@ const std::vector<ParameterInfo> kTable = {
      "the smallest hole", "Smallest hole (node spacings)", kNotInTheDialogs,
      "Refinement opens a loop whose inside the data covers: one in which no disc wider than this many node "
      "spacings (its radius) is free of points (a one-view scan of a rounded part contracts to a ring along its "
-     "rim; parts that touch). Lower it if a real small hole is lost; 0 opens none."},
+     "rim; parts that touch), or across which a limb of the skeleton lies (from one view, a limb in front of "
+     "the body hides a hole-shaped strip of it). Lower it if a real small hole is lost; 0 opens none."},
 
     // ---- Reconstruction (paper Sec. V) ----
     {Parameter::Resolution, "resolution", V::Integer, S::Reconstruction, kCommon, kStraight,

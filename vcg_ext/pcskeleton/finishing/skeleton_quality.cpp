@@ -198,8 +198,9 @@ std::vector<QualityWarning> SkeletonQuality::warnings() const {
     if (!filledLoops.empty()) {
         add(Kind::FilledLoops,
             counted(filledLoops.size(), "loop goes", "loops go") +
-                " round points rather than a hole (their points cover the inside): probably a one-view scan of a "
-                "rounded part, or a limb touching the body.",
+                " round points rather than a hole (their points cover the inside, or a limb lies across it): "
+                "probably a one-view scan of a rounded part or of a limb in front of the body, or a limb touching "
+                "the body.",
             {Remedy::turnOn(Parameter::Refinement), Remedy::take(Step::DeleteNodes)});
     }
     return w;

@@ -16,8 +16,9 @@
 //    a gap (straight between two strands whose tubes do not meet along it) is cut; the
 //    report counts it as a stray bridge. A loop whose own points cover its inside (no
 //    disc wider than RefinementLimits::minHole node spacings free of them: a one-view scan
-//    of a rounded part, a limb touching the body) is opened at its most stretched bone
-//    (skeleton_structure.h, filledLoops).
+//    of a rounded part, a limb touching the body), or across which a limb lies (a one-view
+//    scan of a limb in front of the body, whose shadow contraction rings), is opened at its
+//    most stretched bone (skeleton_structure.h, filledLoops).
 // 3. Junctions joined by a path shorter than the node spacing merge into one node at the
 //    path's centre.
 // Repeated until nothing changes, since each step can expose more. Merged nodes keep all

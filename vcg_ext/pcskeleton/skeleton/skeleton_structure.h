@@ -136,8 +136,19 @@ std::vector<LoopToOpen> contactLoops(const SkeletonGraph& graph, const PointList
 double emptyDiscRadius(const SkeletonGraph& graph, const std::vector<int>& cycle, const PointList& points,
                        const std::vector<std::vector<int>>& nodePoints, double step);
 
-// The loops of shortCycleBasis whose empty disc is narrower than `limits.minHole` node
-// spacings: loops the data fills, each with its most stretched bone.
+// Whether a limb of the skeleton lies across a loop's hole: two or more nodes of the loop's
+// own connected part, on no loop (of shortCycleBasis), inside the loop's nodes projected on
+// their best-fit plane and farther from that plane than the loop's mean radius. Around a hole the
+// shape has, nothing lies there (seen along the loop's axis, one sees through it); from one
+// view, a limb or a finger in front of a body hides the body behind it, and contraction rings
+// that shadow as if it were a hole. Nodes of other loops do not count: a knot's strands cross
+// over each other's loops.
+bool partAcrossLoop(const SkeletonGraph& graph, const std::vector<int>& cycle);
+
+// The loops of shortCycleBasis that the data does not show as holes, each with its most
+// stretched bone: their empty disc is narrower than `limits.minHole` node spacings (loops the
+// data fills), or a limb lies across them (partAcrossLoop). None when
+// `limits.minHole` is 0.
 std::vector<LoopToOpen> filledLoops(const SkeletonGraph& graph, const PointList& points, double nodeSpacing,
                                      const RefinementLimits& limits);
 
