@@ -46,6 +46,9 @@ picture one-view-gaps "One-view scan: hidden stretches leave the skeleton in pie
   "elephant (libcgal-demo)" "scan 1 view" "--gap-limit 0|--gap-limit 0" "default|"
 picture one-view-thin-legs "One-view scan: a thin leg hidden where it meets a thick body is joined across the gap to the body's wall" \
   "thin legs, thick body" "1 view, side" "--gap-limit 0|--gap-limit 0" "default|"
+# Seen as the scanner saw it (from (1, 0.3, -0.55)): the arm in front of the body.
+VIEW=28,-163 picture one-view-shadow "One-view scan: an arm in front of the body leaves a shadow that contracts to a false loop; refinement (on by default) opens it" \
+  "figure, arms close" "1 view, side" "--min-hole 0|--min-hole 0" "default|"
 VIEW=90,-90 picture loops-over-data "Loops round points, not holes: refinement (on by default) opens them; --min-hole 0 keeps them" \
   "genus 2 (figure eight)" "outliers 5%" "--min-hole 0|--min-hole 0" "default|"
 
