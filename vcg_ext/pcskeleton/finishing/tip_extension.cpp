@@ -10,8 +10,8 @@ namespace {
 
 constexpr double kTubeRadii = 1.5;
 // The limb ends where the density of its points along the axis falls under this share of
-// the density over the tip (see limbEnd).
-constexpr double kEndDensityShare = 0.4;
+// the density over the tip (see limbEnd): half, where symmetric noise leaves a blurred end.
+constexpr double kEndDensityShare = 0.5;
 // Fewer points than this in the tube: the farthest one is the end.
 constexpr std::size_t kFewestForDensity = 20;
 
@@ -22,8 +22,9 @@ constexpr std::size_t kFewestForDensity = 20;
 // beyond it, which the farthest point would follow out of the shape. The density over the tip (the
 // middle half of its offsets) is compared, from the far end inwards, with the density in
 // a window of +-`window` around each point: the first point where it is at least
-// kEndDensityShare of the tip's is the end (about a quarter deviation past the true end
-// under noise, the last point on a clean limb).
+// kEndDensityShare of the tip's is the end. Noise moves points past the end as often as
+// short of it, so the blurred density crosses half its level at the true end; on a clean
+// limb that is the last point.
 double limbEnd(const std::vector<double>& along, double window) {
     const std::size_t n = along.size();
     if (n < kFewestForDensity || !(window > 0)) return n > 0 ? along.back() : 0.0;

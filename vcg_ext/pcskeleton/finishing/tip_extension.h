@@ -4,7 +4,7 @@
 // its direction over the last bones, to where its points end: those of the tip and of the
 // nodes up to two node spacings behind it that lie within 1.5 radii of the limb's axis
 // (outliers and noise off to the side do not count), and where their density along the
-// axis falls to 0.4 of its level (on a clean limb the farthest of them; under noise, not
+// axis falls to half its level (on a clean limb the farthest of them; under noise, not
 // the noise's tail beyond the end).
 //
 // The new end node owns no points (the tip keeps them); its radius is the thickness of
