@@ -298,6 +298,25 @@ TEST(CurveSkeleton, OneViewShadowsBehindLimbsAreNotHoles) {
     }
 }
 
+// bench_robustness's plant scanned from one view: a leaf in front of the stem hides a
+// stretch of it, and each of the stem's two pieces turns into a leaf where it ends, so
+// neither has a tip pointing at the other. The stem's corners look ahead.
+TEST(CurveSkeleton, AStemHiddenWhereItTurnsIntoALeafIsBridgedFromTheCorner) {
+    const PointList scan = savedScan("plant_one_view_7962.ply");
+    const SkeletonResult r = computeCurveSkeleton(scan);
+    EXPECT_EQ(r.quality.topology.components, 1) << describe(r.quality.topology);
+    EXPECT_EQ(r.quality.topology.cycles, 0) << describe(r.quality.topology);
+    EXPECT_EQ(r.quality.topology.tips, 8) << describe(r.quality.topology);  // six leaves, the stem's two ends
+    ASSERT_TRUE(r.quality.gapBridging);
+    const std::vector<Edge>& bridges = r.quality.gapBridging->bridges;
+    const auto acrossTheHiddenStretch = [&](const Edge& e) {
+        const Point& a = r.skeleton.nodes[std::size_t(e[0])];
+        const Point& b = r.skeleton.nodes[std::size_t(e[1])];
+        return std::min(a.z(), b.z()) < 0.85 && std::max(a.z(), b.z()) > 0.95;
+    };
+    EXPECT_EQ(std::count_if(bridges.begin(), bridges.end(), acrossTheHiddenStretch), 1) << describe(*r.quality.gapBridging);
+}
+
 // bench_robustness's two close tubes (surfaces 0.12 apart) with 1% noise: noise put a
 // point in the gap, contraction left it there, and thinning made it a node joining the
 // tubes side by side.

@@ -41,8 +41,8 @@ struct SkeletonGraphParameters {
     // the centre of the circle through those points (node_recentering.h).
     bool recentre = true;
     // Join pieces of the skeleton across gaps in the data at most this many node spacings
-    // long, from tube to tube, where a tip's limb points at another piece or a piece is a
-    // single node (gap_bridging.h). 0 = no bridge, the paper's.
+    // long, from tube to tube, where a limb's end (a tip, or a corner where it turns into
+    // another limb) points at another piece or a piece is a single node (gap_bridging.h). 0 = no bridge, the paper's.
     double gapLimit = 8.0;
 };
 

@@ -80,6 +80,39 @@ TEST(GapBridging, PiecesSideBySideStayApart) {
     EXPECT_EQ(analyseTopology(g).components, 2);
 }
 
+TEST(GapBridging, ALimbThatTurnsIntoAnotherEndsAtTheCornerAndLooksAheadFromIt) {
+    // Piece A: a chain along +x to node 4 at x 0.4, which turns there by `turn` degrees into
+    // a second chain of 5 bones (a stem that turns into a leaf where its top is hidden).
+    // Piece B: a chain along y at x 1.0, 5.5 spacings from node 4's tube. Neither piece has
+    // a tip pointing at the other; A's corner points at B when the turn is sharp.
+    for (const double turn : {90.0, 40.0}) {
+        SkeletonGraph g;
+        addChain(g, 0.0, 5);
+        const double angle = turn * M_PI / 180.0;
+        for (int i = 1; i <= 5; ++i) {
+            g.nodes.emplace_back(0.4 + kSpacing * i * std::cos(angle), kSpacing * i * std::sin(angle), 0);
+            g.radii.push_back(0.05);
+            g.edges.push_back({i == 1 ? 4 : int(g.nodeCount()) - 2, int(g.nodeCount()) - 1});
+        }
+        const int across = int(g.nodeCount());
+        for (int i = 0; i < 5; ++i) {
+            g.nodes.emplace_back(1.0, kSpacing * (i - 2), 0);
+            g.radii.push_back(0.05);
+            if (i > 0) g.edges.push_back({across + i - 1, across + i});
+        }
+        normalizeEdges(g.edges);
+        const GapBridgingReport report = bridgeGaps(g, kSpacing, 8.0);
+        if (turn == 90.0) {
+            ASSERT_EQ(report.bridges.size(), 1u) << describe(report);
+            EXPECT_EQ(report.bridges[0], (Edge{4, across + 2}));
+            EXPECT_EQ(analyseTopology(g).components, 1);
+        } else {
+            EXPECT_TRUE(report.bridges.empty()) << "a limb that bends by 40 degrees goes on: " << describe(report);
+            EXPECT_EQ(analyseTopology(g).components, 2);
+        }
+    }
+}
+
 TEST(GapBridging, JoinsTheNearestNodeAheadNotTheNearestNode) {
     // Piece B: a node just beside the tip (outside the cone), and a chain straight ahead.
     SkeletonGraph g;

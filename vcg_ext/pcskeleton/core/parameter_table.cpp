@@ -115,7 +115,8 @@ const std::vector<ParameterInfo> kTable = {
      "Off: the paper's skeleton."},
     {Parameter::GapLimit, "gap_limit", V::Real, S::Thinning, kCommon, kStraight,
      "the gap limit", "Gap limit (node spacings)", "gapLimit",
-     "Where a limb points at another piece of the skeleton whose tube is at most this many node spacings ahead, "
+     "Where a limb's end (a tip, or a corner where it turns into another limb) points at another piece of the "
+     "skeleton whose tube is at most this many node spacings ahead, "
      "or a piece that thinned to a single node lies that close to another's tube (an occluded or "
      "missing stretch of the scan), a bone joins them; pieces side by side are never joined. Raise it for wider "
      "gaps, lower it if separate objects get joined; 0 joins nothing (the paper's)."},

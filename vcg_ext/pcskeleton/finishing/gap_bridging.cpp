@@ -20,6 +20,36 @@ constexpr std::size_t kDirectionBones = 3;
 // degrees off their tips' direction; the close parallel tubes lie 80-90 degrees off.
 constexpr double kAheadCosine = 0.7;
 
+// A limb ends at a node where none of the node's other bones goes on within this cosine
+// (60 degrees) of its direction: at a tip, and at a corner where it turns into another
+// limb (a stem whose top is hidden where a leaf leaves it). Chosen on the tuning half of
+// the robustness suite, between a bend that joins two separate tubes scanned from one
+// view and a corner that leaves an elephant in two (docs/benchmarks.md).
+constexpr double kContinuedCosine = 0.5;
+
+// The unit direction from `node` along its chain through `next`, over up to kDirectionBones
+// bones (zero when they end where they began).
+Point chainDirection(const SkeletonGraph& skeleton, const std::vector<std::vector<int>>& neighbours, int node,
+                     int next) {
+    const std::vector<int> chain = walkChain(neighbours, node, next);
+    const Point along = skeleton.nodes[std::size_t(chain[std::min(kDirectionBones, chain.size() - 1)])] -
+                        skeleton.nodes[std::size_t(node)];
+    return along.norm() > 0.0 ? Point(along.normalized()) : Point(Point::Zero());
+}
+
+// The outward direction of the limb that comes into `node` from `back`, when the limb ends
+// at `node`; zero when another of its bones goes on that way.
+Point endDirection(const SkeletonGraph& skeleton, const std::vector<std::vector<int>>& neighbours, int node,
+                   int back) {
+    const Point outward = -chainDirection(skeleton, neighbours, node, back);
+    for (const int next : neighbours[std::size_t(node)]) {
+        if (next != back && chainDirection(skeleton, neighbours, node, next).dot(outward) > kContinuedCosine) {
+            return Point::Zero();
+        }
+    }
+    return outward;
+}
+
 struct Candidate {
     double length;  // of the bone, node to node
     int from, node;
@@ -48,6 +78,34 @@ Candidate nearestAcrossGap(const SkeletonGraph& skeleton, const std::vector<int>
     return nearest;
 }
 
+// The bridge each limb's end and each lone node would make: the nearest node of another
+// piece within the gap limit, ahead of the end.
+std::vector<Candidate> bridgeCandidates(const SkeletonGraph& skeleton, const std::vector<int>& component,
+                                        double maxGap) {
+    std::vector<Candidate> candidates;
+    // Every end of a limb, at a tip or a corner, looks ahead along the limb. A tip ends at
+    // the edge of its data (tip extension comes first): its own tube reaches no farther.
+    const auto neighbours = adjacencyLists(skeleton.nodeCount(), skeleton.edges);
+    for (std::size_t end = 0; end < skeleton.nodeCount(); ++end) {
+        for (const int back : neighbours[end]) {
+            const Point outward = endDirection(skeleton, neighbours, int(end), back);
+            if (outward.norm() == 0.0) continue;
+            const Candidate nearest = nearestAcrossGap(skeleton, component, int(end), 0.0, maxGap, &outward);
+            if (nearest.node >= 0) candidates.push_back(nearest);
+        }
+    }
+    // A piece of data that thinned to a single node (a foot whose leg is hidden, a patch
+    // seen between occluders) has no direction to look along: it joins the nearest node
+    // of a piece whose tube comes within the same limit of its own, in any direction.
+    for (std::size_t lone = 0; lone < skeleton.nodeCount(); ++lone) {
+        if (!neighbours[lone].empty()) continue;
+        const Candidate nearest =
+            nearestAcrossGap(skeleton, component, int(lone), skeleton.radii[lone], maxGap, nullptr);
+        if (nearest.node >= 0) candidates.push_back(nearest);
+    }
+    return candidates;
+}
+
 }  // namespace
 
 std::string describe(const GapBridgingReport& report) {
@@ -67,31 +125,10 @@ GapBridgingReport bridgeGaps(SkeletonGraph& skeleton, double nodeSpacing, double
     for (const Edge& e : skeleton.edges) pieces.unite(e[0], e[1]);
     std::vector<int> component(skeleton.nodeCount());  // each node's piece before any bridge
     for (std::size_t n = 0; n < component.size(); ++n) component[n] = pieces.find(int(n));
-    const double maxGap = gapLimit * nodeSpacing;
-
+    const bool inPieces =
+        std::any_of(component.begin(), component.end(), [&](int c) { return c != component.front(); });
     std::vector<Candidate> candidates;
-    for (const Limb& limb : tipLimbs(skeleton)) {
-        const int tip = limb.path.front();
-        const int back = limb.path[std::min(kDirectionBones, limb.path.size() - 1)];
-        Point outward = skeleton.nodes[tip] - skeleton.nodes[back];
-        if (outward.norm() == 0.0) continue;
-        outward.normalize();
-        // A tip ends at the edge of its data (tip extension comes first): its own tube
-        // reaches no farther.
-        const Candidate nearest = nearestAcrossGap(skeleton, component, tip, 0.0, maxGap, &outward);
-        if (nearest.node >= 0) candidates.push_back(nearest);
-    }
-
-    // A piece of data that thinned to a single node (a foot whose leg is hidden, a patch
-    // seen between occluders) has no direction to look along: it joins the nearest node
-    // of a piece whose tube comes within the same limit of its own, in any direction.
-    const std::vector<int> degrees = nodeDegrees(skeleton.nodeCount(), skeleton.edges);
-    for (std::size_t lone = 0; lone < skeleton.nodeCount(); ++lone) {
-        if (degrees[lone] != 0) continue;
-        const Candidate nearest =
-            nearestAcrossGap(skeleton, component, int(lone), skeleton.radii[lone], maxGap, nullptr);
-        if (nearest.node >= 0) candidates.push_back(nearest);
-    }
+    if (inPieces) candidates = bridgeCandidates(skeleton, component, gapLimit * nodeSpacing);
 
     // Nearest first, and only between pieces still apart: a bridge never closes a cycle.
     std::sort(candidates.begin(), candidates.end());
