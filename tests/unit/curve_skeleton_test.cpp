@@ -314,7 +314,8 @@ TEST(CurveSkeleton, AStemHiddenWhereItTurnsIntoALeafIsBridgedFromTheCorner) {
         const Point& b = r.skeleton.nodes[std::size_t(e[1])];
         return std::min(a.z(), b.z()) < 0.85 && std::max(a.z(), b.z()) > 0.95;
     };
-    EXPECT_EQ(std::count_if(bridges.begin(), bridges.end(), acrossTheHiddenStretch), 1) << describe(*r.quality.gapBridging);
+    EXPECT_EQ(std::count_if(bridges.begin(), bridges.end(), acrossTheHiddenStretch), 1)
+        << describe(*r.quality.gapBridging);
 }
 
 // bench_robustness's two close tubes (surfaces 0.12 apart) with 1% noise: noise put a

@@ -42,7 +42,8 @@ struct SkeletonGraphParameters {
     bool recentre = true;
     // Join pieces of the skeleton across gaps in the data at most this many node spacings
     // long, from tube to tube, where a limb's end (a tip, or a corner where it turns into
-    // another limb) points at another piece or a piece is a single node (gap_bridging.h). 0 = no bridge, the paper's.
+    // another limb) points at another piece or a piece is a single node (gap_bridging.h).
+    // 0 = no bridge, the paper's.
     double gapLimit = 8.0;
 };
 

@@ -37,15 +37,21 @@ Point chainDirection(const SkeletonGraph& skeleton, const std::vector<std::vecto
     return along.norm() > 0.0 ? Point(along.normalized()) : Point(Point::Zero());
 }
 
-// The outward direction of the limb that comes into `node` from `back`, when the limb ends
-// at `node`; zero when another of its bones goes on that way.
-Point endDirection(const SkeletonGraph& skeleton, const std::vector<std::vector<int>>& neighbours, int node,
-                   int back) {
-    const Point outward = -chainDirection(skeleton, neighbours, node, back);
+// Per bone of `node`, the outward direction of the limb that comes into `node` along it,
+// when the limb ends at `node`; zero when another of the node's bones goes on that way.
+std::vector<Point> endDirections(const SkeletonGraph& skeleton, const std::vector<std::vector<int>>& neighbours,
+                                 int node) {
+    std::vector<Point> along;
     for (const int next : neighbours[std::size_t(node)]) {
-        if (next != back && chainDirection(skeleton, neighbours, node, next).dot(outward) > kContinuedCosine) {
-            return Point::Zero();
+        along.push_back(chainDirection(skeleton, neighbours, node, next));
+    }
+    std::vector<Point> outward;
+    for (std::size_t back = 0; back < along.size(); ++back) {
+        bool continued = false;
+        for (std::size_t next = 0; next < along.size(); ++next) {
+            continued = continued || (next != back && -along[back].dot(along[next]) > kContinuedCosine);
         }
+        outward.push_back(continued ? Point(Point::Zero()) : Point(-along[back]));
     }
     return outward;
 }
@@ -87,8 +93,7 @@ std::vector<Candidate> bridgeCandidates(const SkeletonGraph& skeleton, const std
     // the edge of its data (tip extension comes first): its own tube reaches no farther.
     const auto neighbours = adjacencyLists(skeleton.nodeCount(), skeleton.edges);
     for (std::size_t end = 0; end < skeleton.nodeCount(); ++end) {
-        for (const int back : neighbours[end]) {
-            const Point outward = endDirection(skeleton, neighbours, int(end), back);
+        for (const Point& outward : endDirections(skeleton, neighbours, int(end))) {
             if (outward.norm() == 0.0) continue;
             const Candidate nearest = nearestAcrossGap(skeleton, component, int(end), 0.0, maxGap, &outward);
             if (nearest.node >= 0) candidates.push_back(nearest);

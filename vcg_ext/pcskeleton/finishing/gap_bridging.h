@@ -8,7 +8,7 @@
 // between them: from the end to the other piece's wall, not its axis (a thin limb hidden
 // where it meets a thick body). A piece that thinned to a single node has no limb to look
 // along and joins the nearest piece. Pieces that lie side by side (two separate objects,
-// two close parallel tubes) are not ahead of any tip and stay apart. The bones added are
+// two close parallel tubes) are not ahead of any limb's end and stay apart. The bones added are
 // marked as inferred (SkeletonGraph::inferred). Not the paper's step; on by default
 // (SkeletonGraphParameters::gapLimit says why).
 #pragma once
