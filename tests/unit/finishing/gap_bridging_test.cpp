@@ -80,6 +80,25 @@ TEST(GapBridging, PiecesSideBySideStayApart) {
     EXPECT_EQ(analyseTopology(g).components, 2);
 }
 
+TEST(GapBridging, AHookAtTheEndOfALimbDoesNotTurnItTowardsAPieceBesideIt) {
+    // Two parallel chains 3 spacings apart, as two close tubes scanned from the side: the
+    // first one's end, a half cap, contracted into a hook of two short bones curling
+    // towards the second chain. Over its last three bones the limb points at the second
+    // chain's end; the limb as a whole points along the chains.
+    SkeletonGraph g;
+    addChain(g, 0.0, 8);  // nodes 0-7, x 0..0.7
+    for (const Point& hook : {Point(0.76, 0.07, 0), Point(0.78, 0.15, 0)}) {
+        g.nodes.push_back(hook);
+        g.radii.push_back(0.05);
+        g.edges.push_back({int(g.nodeCount()) - 2, int(g.nodeCount()) - 1});
+    }
+    addChain(g, 0.0, 9, 3 * kSpacing);  // x 0..0.8
+    normalizeEdges(g.edges);
+    const GapBridgingReport report = bridgeGaps(g, kSpacing, 8.0);
+    EXPECT_TRUE(report.bridges.empty()) << describe(report);
+    EXPECT_EQ(analyseTopology(g).components, 2);
+}
+
 TEST(GapBridging, ALimbThatTurnsIntoAnotherEndsAtTheCornerAndLooksAheadFromIt) {
     // Piece A: a chain along +x to node 4 at x 0.4, which turns there by `turn` degrees into
     // a second chain of 5 bones (a stem that turns into a leaf where its top is hidden).

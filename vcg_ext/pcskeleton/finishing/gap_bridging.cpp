@@ -13,8 +13,11 @@ namespace pcskeleton {
 namespace {
 
 // A tip's outward direction is measured over this many bones back along its limb: one bone
-// zig-zags with the nodes' placement, the whole limb may bend.
-constexpr std::size_t kDirectionBones = 3;
+// zig-zags with the nodes' placement, and the end of a tube seen from one side, a half cap,
+// contracts into a hook of a bone or two that curls towards its visible side (it would
+// point at a tube beside it); the whole limb may bend. Chosen on the tuning half of the
+// robustness suite (docs/benchmarks.md).
+constexpr std::size_t kDirectionBones = 4;
 // A node is ahead of a tip when it lies within this cosine (45 degrees) of the tip's
 // outward direction. On the robustness suite the pieces of one-view scans lie 37-41
 // degrees off their tips' direction; the close parallel tubes lie 80-90 degrees off.
