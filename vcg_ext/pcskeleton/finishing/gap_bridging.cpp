@@ -19,8 +19,8 @@ namespace {
 // robustness suite (docs/benchmarks.md).
 constexpr std::size_t kDirectionBones = 4;
 // A node is ahead of a tip when it lies within this cosine (45 degrees) of the tip's
-// outward direction. On the robustness suite the pieces of one-view scans lie 37-41
-// degrees off their tips' direction; the close parallel tubes lie 80-90 degrees off.
+// outward direction: the pieces of a one-view scan lie a little inside that cone, parallel
+// tubes side by side nearly square to it.
 constexpr double kAheadCosine = 0.7;
 
 // A limb ends at a node where none of the node's other bones goes on within this cosine
