@@ -1,8 +1,9 @@
-"""The picture of the README's branches: the paper's corn scan, each point coloured by its
-skeleton branch, with the table printed.
+"""The pictures of the README's branches: a scan seen from the side (its height along z),
+each point coloured by its skeleton branch, with the table printed.
 
 usage: python3 branches_picture.py [POINTS_FILE] [PICTURE.png]
-(defaults: tests/data/scans/corn_v12108.ply, corn_branches.png here)
+(defaults: tests/data/scans/corn_v12108.ply, corn_branches.png here; the README's tree is
+the authors' tree_small.off, written to tree_branches.png)
 """
 import os
 import sys
