@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <optional>
 
 using namespace pcskeleton;
 
@@ -80,6 +81,52 @@ TEST(QualityReport, IterationLimitIsAWarning) {
     EXPECT_TRUE(warnings.front().problem.suggests(Remedy::raise(Parameter::MaxIterations)));
     const std::string text = describe(warnings.front().problem);
     EXPECT_NE(text.find("maximum iterations"), std::string::npos) << text;
+}
+
+namespace {
+
+std::optional<QualityWarning> uncontractedWarning(const SkeletonQuality& q) {
+    for (const QualityWarning& w : q.warnings()) {
+        if (w.kind == QualityWarning::Kind::UncontractedPoints) return w;
+    }
+    return std::nullopt;
+}
+
+// A flat square plate: the cotangent Laplacian moves a plane only at its edges, so the
+// contraction converges with the plate's middle left a flat cloud.
+PointList flatPlate() {
+    return shapes::sample(shapes::sheet([](double u, double v) { return Point(u, v, 0.0); }, 20, 20), 4000, 3);
+}
+
+}  // namespace
+
+TEST(QualityReport, PointsOfAConvergedContractionThatStayedAreNotToldToIterateMore) {
+    const PointList plate = flatPlate();
+    const SkeletonResult result = computeCurveSkeleton(plate);
+    ASSERT_TRUE(result.quality.contraction);
+    ASSERT_EQ(result.quality.contraction->stopReason, StopReason::Converged);
+    const std::optional<QualityWarning> warning = uncontractedWarning(result.quality);
+    ASSERT_TRUE(warning) << describe(result.quality);
+    EXPECT_FALSE(warning->problem.suggests(Remedy::raise(Parameter::MaxIterations))) << describe(warning->problem);
+    EXPECT_TRUE(warning->problem.suggests(Remedy::lower(Parameter::ContractionScale))) << describe(warning->problem);
+    EXPECT_NE(describe(warning->problem).find("converged"), std::string::npos) << describe(warning->problem);
+
+    // What the warning says: a higher iteration limit leaves the same points uncontracted.
+    SkeletonParameters moreIterations;
+    moreIterations.contraction.maxIterations = 4 * result.quality.contraction->iterations;
+    const SkeletonResult again = computeCurveSkeleton(plate, moreIterations);
+    EXPECT_EQ(again.quality.contraction->iterations, result.quality.contraction->iterations);
+    EXPECT_EQ(again.quality.uncontractedPoints, result.quality.uncontractedPoints);
+}
+
+TEST(QualityReport, PointsLeftByTheIterationLimitAreToldToIterateMore) {
+    SkeletonParameters oneIteration;
+    oneIteration.contraction.maxIterations = 1;
+    const SkeletonResult result = computeCurveSkeleton(flatPlate(), oneIteration);
+    ASSERT_EQ(result.quality.contraction->stopReason, StopReason::IterationLimit);
+    const std::optional<QualityWarning> warning = uncontractedWarning(result.quality);
+    ASSERT_TRUE(warning) << describe(result.quality);
+    EXPECT_TRUE(warning->problem.suggests(Remedy::raise(Parameter::MaxIterations))) << describe(warning->problem);
 }
 
 TEST(QualityReport, RefinementIsReportedWhenOn) {
