@@ -4,7 +4,7 @@
 // Checks (each one names the parameters or steps that usually fix it, as remedies that each
 // front end words in its own terms):
 // - points that did not contract: their contracted position is farther from the skeleton
-//   than the radius there (outliers, or parts too flat or thick for the iterations given);
+//   than the radius there (outliers, or parts too flat or thick to contract);
 // - parts of the input (connected through the 1-rings) whose nodes have no bone: they
 //   collapsed to a point and gave no skeleton; and isolated nodes in general (outliers);
 // - nodes outside the shape: all of a node's points lie on one side of it (the mean of
