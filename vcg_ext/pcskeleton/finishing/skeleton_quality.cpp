@@ -138,23 +138,21 @@ std::vector<QualityWarning> SkeletonQuality::warnings() const {
              Remedy::turnOff(Parameter::OutlierDetection)});
     }
     if (points > 0 && uncontractedPoints > kUncontractedShareWarning * points) {
-        const std::string share = counted(uncontractedPoints, "point", "points") + " (" +
-                                  percent(double(uncontractedPoints) / points) +
-                                  ") did not contract (they stayed farther from the skeleton than its radius there): ";
-        if (stopReason == StopReason::Converged) {
-            // Converged: further iterations leave these points where they are (the rings of the
-            // parts already on a curve grow back, which is what stops it). A slower growth of
-            // W_L is the paper's answer to thick parts next to thin ones (its Sec. VI).
-            add(Kind::UncontractedPoints,
-                share + "outliers, or a part that contraction does not thin (a flat plate or disc, a body much "
-                        "thicker than its limbs); it converged, so more iterations would not move them.",
-                {Remedy::take(Step::RemoveOutliers), Remedy::lower(Parameter::ContractionScale),
-                 Remedy::raise(Parameter::NeighbourCount)});
-        } else {
-            add(Kind::UncontractedPoints, share + "outliers, or a part too flat or thick for the iterations given.",
-                {Remedy::take(Step::RemoveOutliers), Remedy::raise(Parameter::NeighbourCount),
-                 Remedy::raise(Parameter::MaxIterations)});
-        }
+        // Converged: further iterations leave these points where they are (the rings of the
+        // parts already on a curve grow back, which is what stops it). A slower growth of W_L
+        // is the paper's answer to thick parts next to thin ones (its Sec. VI).
+        const bool converged = stopReason == StopReason::Converged;
+        add(Kind::UncontractedPoints,
+            counted(uncontractedPoints, "point", "points") + " (" + percent(double(uncontractedPoints) / points) +
+                ") did not contract (they stayed farther from the skeleton than its radius there): outliers, or a "
+                "part " +
+                (converged ? "that contraction does not thin (a flat plate or disc, a body much thicker than its "
+                             "limbs); it converged, so more iterations would not move them."
+                           : "too flat or thick for the iterations given."),
+            converged ? std::vector<Remedy>{Remedy::take(Step::RemoveOutliers), Remedy::lower(Parameter::ContractionScale),
+                                            Remedy::raise(Parameter::NeighbourCount)}
+                      : std::vector<Remedy>{Remedy::take(Step::RemoveOutliers), Remedy::raise(Parameter::NeighbourCount),
+                                            Remedy::raise(Parameter::MaxIterations)});
     }
     if (partsWithoutBone > 0) {
         add(Kind::PartsWithoutBone,
