@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -248,4 +249,71 @@ TEST(SkeletonStructure, ALoopWithALimbAcrossItsHoleIsNotAHole) {
     const auto cycles = shortCycleBasis(twoLoops);
     ASSERT_EQ(cycles.size(), 2u);
     for (const auto& cycle : cycles) EXPECT_FALSE(partAcrossLoop(twoLoops, cycle));
+}
+
+namespace {
+
+// A body up the z axis (radius 0.1, nodes 0.1 apart from z = 0 to 0.5) and an arm (radius
+// 0.04) from the body's top out to x = 0.3 and down to z = 0.1, as tubes of points, each
+// point given its nearest node. The arm's lowest node, `hand`, is joined to body node
+// `bodyNode`: a loop. `bar` adds a tube from the hand to the body, which makes that bone real.
+struct ArmByTheBody {
+    SkeletonGraph graph;
+    PointList points;
+    int hand = -1;
+};
+
+ArmByTheBody armByTheBody(int bodyNode, bool bar) {
+    ArmByTheBody arm;
+    SkeletonGraph& g = arm.graph;
+    for (int i = 0; i <= 5; ++i) {
+        g.nodes.emplace_back(0, 0, 0.1 * i);
+        g.radii.push_back(0.1);
+        if (i > 0) g.edges.push_back({i - 1, i});
+    }
+    int last = 5;
+    for (int i = 1; i <= 3; ++i) last = graphs::addNode(g, Point(0.1 * i, 0, 0.5), last);
+    for (int i = 4; i >= 1; --i) last = graphs::addNode(g, Point(0.3, 0, 0.1 * i), last);
+    arm.hand = last;
+    for (std::size_t n = 6; n < g.nodeCount(); ++n) g.radii[n] = 0.04;
+    g.edges.push_back({bodyNode, arm.hand});
+    normalizeEdges(g.edges);
+
+    arm.points = shapes::tube({{Point(0, 0, 0), Point(0, 0, 0.5)}}, 0.1, 3000);
+    shapes::Polyline limb = {{Point(0, 0, 0.5), Point(0.3, 0, 0.5)}, {Point(0.3, 0, 0.5), Point(0.3, 0, 0.1)}};
+    if (bar) limb.push_back({Point(0.3, 0, 0.1), Point(0, 0, 0.1)});
+    for (const Point& p : shapes::tube(limb, 0.04, 1500, 2)) {
+        if (std::hypot(p.x(), p.y()) > 0.1) arm.points.push_back(p);  // not inside the body
+    }
+    graphs::giveEachPointItsNearestNode(g, arm.points);
+    return arm;
+}
+
+bool hasBone(const std::vector<Edge>& bones, int a, int b) {
+    return std::any_of(bones.begin(), bones.end(), [&](const Edge& e) {
+        return (e[0] == a && e[1] == b) || (e[0] == b && e[1] == a);
+    });
+}
+
+}  // namespace
+
+// From one view, an arm's end beside the body is drawn to it and joined across the space
+// between them: the bone from the body's junction to the arm's chain has no data along it.
+// With a bar of data between the two it is real; joined to the body's end (then a chain
+// node too), it is a loop running on across a gap, which it keeps; never when the gap
+// stretch is 0.
+TEST(SkeletonStructure, AnArmJoinedToTheBodyAcrossEmptySpaceIsABoneOverAGap) {
+    const double stretch = RefinementLimits{}.gapStretch;
+    const ArmByTheBody apart = armByTheBody(1, false);
+    const std::vector<Edge> bones = bonesOverDataGaps(apart.graph, apart.points, pointsOfNodes(apart.graph), stretch);
+    ASSERT_EQ(bones.size(), 1u);
+    EXPECT_TRUE(hasBone(bones, 1, apart.hand));
+    EXPECT_TRUE(bonesOverDataGaps(apart.graph, apart.points, pointsOfNodes(apart.graph), 0.0).empty());
+    EXPECT_TRUE(bonesOverDataGaps(apart.graph, {}, pointsOfNodes(apart.graph), stretch).empty()) << "no points";
+
+    const ArmByTheBody joined = armByTheBody(1, true);
+    EXPECT_TRUE(bonesOverDataGaps(joined.graph, joined.points, pointsOfNodes(joined.graph), stretch).empty());
+
+    const ArmByTheBody chain = armByTheBody(0, false);
+    EXPECT_TRUE(bonesOverDataGaps(chain.graph, chain.points, pointsOfNodes(chain.graph), stretch).empty());
 }

@@ -137,7 +137,8 @@ const std::vector<ParameterInfo> kTable = {
     {Parameter::GapStretch, "gap_stretch", V::Real, S::Thinning, kAdvanced, kStraight,
      "the gap stretch", "Gap stretch (end radii)", kNotInTheDialogs,
      "Refinement cuts a bone that joins two strands straight across the gap between them (on a loop, between "
-     "junctions the strands run through) when it is longer than this many times the radii at its two ends "
+     "junctions the strands run through), or a limb's end to another part across space without points (an arm "
+     "beside the body seen from one side), when it is longer than this many times the radii at its two ends "
      "together. Raise it if a real bone is cut; 0 cuts none."},
     {Parameter::MinHole, "min_hole", V::Real, S::Thinning, kAdvanced, kStraight,
      "the smallest hole", "Smallest hole (node spacings)", kNotInTheDialogs,

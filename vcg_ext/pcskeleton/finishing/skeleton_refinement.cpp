@@ -147,6 +147,19 @@ int cutBonesAcrossGaps(SkeletonGraph& skeleton, double nodeSpacing, double minSt
     return cuts;
 }
 
+// Bones over gaps in the data (skeleton_structure.h), widest gap first, one at a time.
+int cutBonesOverDataGaps(SkeletonGraph& skeleton, const PointList& points, double minStretch) {
+    normalizeEdges(skeleton.edges);  // sorted, for eraseBone; erasing keeps them so
+    const std::vector<std::vector<int>> nodePoints = pointsOfNodes(skeleton);  // cuts keep every node's points
+    int cuts = 0;
+    for (std::vector<Edge> bones = bonesOverDataGaps(skeleton, points, nodePoints, minStretch); !bones.empty();
+         bones = bonesOverDataGaps(skeleton, points, nodePoints, minStretch)) {
+        eraseBone(skeleton, bones.front());
+        ++cuts;
+    }
+    return cuts;
+}
+
 // A stray bridge (skeleton_structure.h) is cut at its far end, and its nodes (a handful
 // of points) are absorbed into the junction it then hangs from, which keeps its place.
 // One at a time: a cut may leave the next bridge the only way between its parts.
@@ -203,7 +216,13 @@ RefinementReport refineSkeleton(SkeletonGraph& skeleton, const PointList& points
         report.cyclesCollapsed += cycles;
         report.bridgesCut += bridges;
         report.junctionsMerged += junctions;
-        if (spurs + ends + cycles + cuts + bridges + junctions == 0) break;
+        if (spurs + ends + cycles + cuts + bridges + junctions > 0) continue;
+        // Last, once the steps above leave the skeleton as it is: where a stray bridge joins
+        // a limb's end to another part, they absorb the bridge's nodes, and a cut there
+        // would leave them as a limb of their own.
+        const int dataGapBones = cutBonesOverDataGaps(skeleton, points, refinementLimits.gapStretch);
+        report.bridgesCut += dataGapBones;
+        if (dataGapBones == 0) break;
     }
     return report;
 }

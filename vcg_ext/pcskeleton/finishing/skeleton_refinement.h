@@ -21,8 +21,10 @@
 //    most stretched bone (skeleton_structure.h, filledLoops).
 // 3. Junctions joined by a path shorter than the node spacing merge into one node at the
 //    path's centre.
-// Repeated until nothing changes, since each step can expose more. Merged nodes keep all
-// their points and their mean radius.
+// Repeated until nothing changes, since each step can expose more. Then, once nothing does,
+// a bone over a gap in the data (a limb's end joined to another part across space where
+// the data has no points: skeleton_structure.h, bonesOverDataGaps) is cut, counted as a stray
+// bridge, and the steps run again. Merged nodes keep all their points and their mean radius.
 #pragma once
 
 #include "pcskeleton/skeleton/skeleton_graph.h"

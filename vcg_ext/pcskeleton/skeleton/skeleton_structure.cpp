@@ -257,6 +257,71 @@ std::vector<Edge> bonesAcrossGaps(const SkeletonGraph& graph, double nodeSpacing
     return bones;
 }
 
+namespace {
+
+PointList pointsAt(const PointList& points, const std::vector<int>& indices) {
+    PointList chosen;
+    chosen.reserve(indices.size());
+    for (int i : indices) chosen.push_back(points[std::size_t(i)]);
+    return chosen;
+}
+
+// The median distance from a point of `cloud` (two or more) to its nearest other one.
+double medianSpacing(const PointList& cloud) {
+    const PointIndex index(cloud);
+    std::vector<double> nearest;
+    nearest.reserve(cloud.size());
+    std::vector<int> found;
+    for (std::size_t i = 0; i < cloud.size(); ++i) {
+        index.nearest(cloud[i], 2, found);
+        const int other = found[0] == int(i) ? found[1] : found[0];
+        nearest.push_back((cloud[std::size_t(other)] - cloud[i]).norm());
+    }
+    return median(std::move(nearest));
+}
+
+// The shortest distance from a point of `a` to one of `b` (neither empty).
+double closestApproach(const PointList& a, const PointList& b) {
+    const PointIndex index(b);
+    double closest = std::numeric_limits<double>::infinity();
+    std::vector<int> found;
+    for (const Point& p : a) {
+        index.nearest(p, 1, found);
+        closest = std::min(closest, (b[std::size_t(found[0])] - p).norm());
+    }
+    return closest;
+}
+
+}  // namespace
+
+std::vector<Edge> bonesOverDataGaps(const SkeletonGraph& graph, const PointList& points,
+                                    const std::vector<std::vector<int>>& nodePoints, double minStretch) {
+    constexpr std::size_t kFewestPoints = 3;
+    if (!(minStretch > 0) || graph.pointNode.size() != points.size()) return {};
+    const auto neighbours = adjacencyLists(graph.nodeCount(), graph.edges);
+    const auto isJunction = [&](int n) { return neighbours[std::size_t(n)].size() >= 3; };
+    const auto inChain = [&](int n) { return neighbours[std::size_t(n)].size() == 2; };
+    std::vector<std::pair<double, Edge>> found;  // (minus the gap in spacings, bone)
+    for (const Edge& bone : graph.edges) {
+        const bool limbEnd = (isJunction(bone[0]) && inChain(bone[1])) || (isJunction(bone[1]) && inChain(bone[0]));
+        if (!limbEnd) continue;
+        const double radii = graph.radii[bone[0]] + graph.radii[bone[1]];
+        if (!(boneLength(graph, bone[0], bone[1]) > minStretch * radii)) continue;
+        const PointList a = pointsAt(points, nodePoints[bone[0]]), b = pointsAt(points, nodePoints[bone[1]]);
+        if (a.size() < kFewestPoints || b.size() < kFewestPoints) continue;  // too few for a spacing
+        if (shortestDetour(graph, neighbours, bone[0], bone[1]).empty()) continue;  // not on a loop
+        PointList both = a;
+        both.insert(both.end(), b.begin(), b.end());
+        const double spacing = medianSpacing(both);
+        const double gap = closestApproach(a, b) / spacing;
+        if (spacing > 0 && gap > kDataGapSpacings) found.push_back({-gap, bone});
+    }
+    std::sort(found.begin(), found.end());
+    std::vector<Edge> bones;
+    for (const auto& [minusGap, bone] : found) bones.push_back(bone);
+    return bones;
+}
+
 bool isRedundantLimb(const SkeletonGraph& graph, const Limb& limb, const PointList& points,
                      const std::vector<std::vector<int>>& nodePoints, double nodeSpacing) {
     if (!limb.atJunction || graph.pointNode.size() != points.size()) return false;

@@ -92,6 +92,19 @@ bool isSpuriousCycle(const SkeletonGraph& graph, const std::vector<int>& cycle, 
 // joined across a narrow gap, rather than a hole the shape has.
 bool isNarrowCycle(const SkeletonGraph& graph, const std::vector<int>& cycle, double minOpening);
 
+// Bones over gaps in the data: a bone on a loop, from a junction to a node of a chain (two
+// bones), longer than `minStretch` (RefinementLimits::gapStretch; 0 = none) times the radii
+// at its two ends together, whose two nodes' points come no nearer to each other than
+// kDataGapSpacings times the spacing of those points (the median distance from one of them
+// to its nearest). The end of a limb beside another part (an arm by the body, a finger by
+// the palm) seen from one side: contraction draws the two together and thinning joins them
+// across space where the data has no points, a false loop. Along a real bone the two nodes'
+// points meet; a loop that runs on across an occluded stretch does so between chain nodes,
+// not from a junction. Widest gap (in spacings) first.
+inline constexpr double kDataGapSpacings = 4.0;
+std::vector<Edge> bonesOverDataGaps(const SkeletonGraph& graph, const PointList& points,
+                                    const std::vector<std::vector<int>>& nodePoints, double minStretch);
+
 // The bone of `cycle` (consecutive nodes, closing back to the first) longest for its
 // nodes' radii: where the loop crosses from one part to another, their balls do not meet.
 Edge mostStretchedBone(const SkeletonGraph& graph, const std::vector<int>& cycle);
