@@ -134,30 +134,28 @@ int openLoopsWithoutHoles(SkeletonGraph& skeleton, const PointList& points, doub
     return contactCuts + filledCuts;
 }
 
-// Bones across gaps (skeleton_structure.h) are cut one at a time, most stretched first: a
-// cut may leave the next one the only way between its parts.
-int cutBonesAcrossGaps(SkeletonGraph& skeleton, double nodeSpacing, double minStretch) {
+// Cuts the first of the bones `find` gives, then asks again, until it gives none: a cut
+// may leave the next one the only way between its parts. Returns how many were cut.
+template <typename FindBones>
+int cutOneAtATime(SkeletonGraph& skeleton, const FindBones& find) {
     normalizeEdges(skeleton.edges);  // sorted, for eraseBone; erasing keeps them so
     int cuts = 0;
-    for (std::vector<Edge> bones = bonesAcrossGaps(skeleton, nodeSpacing, minStretch); !bones.empty();
-         bones = bonesAcrossGaps(skeleton, nodeSpacing, minStretch)) {
+    for (std::vector<Edge> bones = find(); !bones.empty(); bones = find()) {
         eraseBone(skeleton, bones.front());
         ++cuts;
     }
     return cuts;
 }
 
-// Bones over gaps in the data (skeleton_structure.h), widest gap first, one at a time.
+// Bones across gaps (skeleton_structure.h), most stretched first.
+int cutBonesAcrossGaps(SkeletonGraph& skeleton, double nodeSpacing, double minStretch) {
+    return cutOneAtATime(skeleton, [&] { return bonesAcrossGaps(skeleton, nodeSpacing, minStretch); });
+}
+
+// Bones over gaps in the data (skeleton_structure.h), widest gap first.
 int cutBonesOverDataGaps(SkeletonGraph& skeleton, const PointList& points, double minStretch) {
-    normalizeEdges(skeleton.edges);  // sorted, for eraseBone; erasing keeps them so
     const std::vector<std::vector<int>> nodePoints = pointsOfNodes(skeleton);  // cuts keep every node's points
-    int cuts = 0;
-    for (std::vector<Edge> bones = bonesOverDataGaps(skeleton, points, nodePoints, minStretch); !bones.empty();
-         bones = bonesOverDataGaps(skeleton, points, nodePoints, minStretch)) {
-        eraseBone(skeleton, bones.front());
-        ++cuts;
-    }
-    return cuts;
+    return cutOneAtATime(skeleton, [&] { return bonesOverDataGaps(skeleton, points, nodePoints, minStretch); });
 }
 
 // A stray bridge (skeleton_structure.h) is cut at its far end, and its nodes (a handful

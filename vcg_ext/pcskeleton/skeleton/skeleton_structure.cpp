@@ -307,9 +307,11 @@ std::vector<Edge> bonesOverDataGaps(const SkeletonGraph& graph, const PointList&
         if (!limbEnd) continue;
         const double radii = graph.radii[bone[0]] + graph.radii[bone[1]];
         if (!(boneLength(graph, bone[0], bone[1]) > minStretch * radii)) continue;
-        const PointList a = pointsAt(points, nodePoints[bone[0]]), b = pointsAt(points, nodePoints[bone[1]]);
-        if (a.size() < kFewestPoints || b.size() < kFewestPoints) continue;  // too few for a spacing
+        if (nodePoints[bone[0]].size() < kFewestPoints || nodePoints[bone[1]].size() < kFewestPoints) {
+            continue;  // too few for a spacing
+        }
         if (shortestDetour(graph, neighbours, bone[0], bone[1]).empty()) continue;  // not on a loop
+        const PointList a = pointsAt(points, nodePoints[bone[0]]), b = pointsAt(points, nodePoints[bone[1]]);
         PointList both = a;
         both.insert(both.end(), b.begin(), b.end());
         const double spacing = medianSpacing(both);
