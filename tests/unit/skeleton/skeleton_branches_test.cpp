@@ -148,6 +148,36 @@ TEST(SkeletonBranches, WhereTheArmsLinesMeetOutsideEveryTubeTheJunctionsNodeIsTa
     EXPECT_NEAR(measureBranches(g).branches[0].length, 1.0, 1e-9);
 }
 
+TEST(SkeletonBranches, AnArmsLineRunsOnAsLongAsTheArmIsStraightAndEndsAtABend) {
+    // A Y (radius 0.1: each arm's line takes its nodes from one to five radii away, then
+    // those beyond while the arm is straight) whose arms run 1.4 at 45 degrees. The nodes near the fork tilt as noise tilts them: each arm's nodes within
+    // five radii lean across it by up to 0.016, the rest lie on the arm. Fitted to the near
+    // nodes alone, the lines would meet off the fork; along the whole straight arm they meet
+    // close to it.
+    SkeletonGraph g = singleNode(Point::Zero());
+    const int fork = addChain(g, 0, Point(0, 0, 1), 20);
+    std::vector<int> tips;
+    for (double side : {-1.0, 1.0}) {
+        const int first = int(g.nodeCount());
+        tips.push_back(addChain(g, fork, Point(1.0 * side, 0, 2.0), 28));
+        const Point across = Point(1.0, 0, -side).normalized();
+        for (int i = 2; i <= 10; ++i) g.nodes[std::size_t(first + i - 1)] += 0.004 * (i - 6) * across;
+    }
+    const double armLength = std::sqrt(2.0);
+    SkeletonBranches b = measureBranches(g);
+    EXPECT_NEAR(b.branches[0].length, 1.0, 0.004);
+    for (int tip : tips) EXPECT_NEAR(branchEndingAt(b, tip).length, armLength, 0.004);
+
+    // An arm that runs straight for 0.7 and then turns to the horizontal: its line ends at
+    // the bend, and the fork stays where it is.
+    Fork bent;
+    const int bend = addChain(bent.graph, bent.fork, Point(0.5, 0, 1.5), 14);
+    const int bentTip = addChain(bent.graph, bend, Point(1.5, 0, 1.5), 20);
+    b = measureBranches(bent.graph);
+    EXPECT_NEAR(b.branches[0].length, 1.0, 0.004);
+    EXPECT_NEAR(branchEndingAt(b, bentTip).length, 0.5 * std::sqrt(2.0) + 1.0, 0.004);
+}
+
 TEST(SkeletonBranches, AZigzagOfNodesMeasuresTheBoneNotTheZigzag) {
     // Twenty bones along z with the nodes 0.01 to either side in turn: the zigzag is 2% longer.
     SkeletonGraph g = singleNode(Point::Zero());

@@ -74,12 +74,35 @@ bool withinTubes(const SkeletonGraph& skeleton, const std::vector<int>& junction
     return false;
 }
 
+// How far `p` lies from the line through `fit`'s centroid along its axis.
+double distanceFromLine(const Point& p, const LocalPlane& fit) {
+    const Point direction = fit.axes.col(2), offset = p - fit.centroid;
+    return (offset - offset.dot(direction) * direction).norm();
+}
+
+// Adds to `line` (an arm's nodes for its line, at least two) the arm's nodes from `next` on,
+// one at a time, while each lies within kStraightArm junction radii of the line fitted to
+// those before it, and up to the arm's other end (a junction's node is not the arm's own).
+// Under noise a line fitted along more of the arm tilts less; a bend ends it.
+void extendWhileStraight(const SkeletonGraph& skeleton, const std::vector<std::vector<int>>& neighbours,
+                         const std::vector<int>& arm, std::size_t next, double radius, std::vector<int>& line) {
+    // Wide enough for the scatter of a noisy straight arm's nodes, narrow enough that a bend
+    // ends the line. Chosen on the Y and the star (docs/benchmarks.md#branch-measures).
+    constexpr double kStraightArm = 0.5;
+    for (; next < arm.size() && neighbours[std::size_t(arm[next])].size() < 3; ++next) {
+        const Point& node = skeleton.nodes[std::size_t(arm[next])];
+        if (distanceFromLine(node, fitLocalPlane(skeleton.nodes, line)) > kStraightArm * radius) return;
+        line.push_back(arm[next]);
+    }
+}
+
 // Where a junction's arms meet: the point nearest (least squares) to the lines along its
 // arms (for a group of junctions, the arms of all of them). Contraction leaves a junction's
 // node in the middle of the arms' overlap, beyond the fork, so that measured from it the
 // stem is too long and the arms too short (docs/benchmarks.md#branch-measures). Each arm's
-// line is fitted to its nodes from one to kArmLineReach junction radii away (nearer ones
-// lean towards the junction). The junction's node itself when fewer than two arms give a line,
+// line is fitted to its nodes from one junction radius away (nearer ones lean towards the
+// junction) out to kArmLineReach radii, and on as long as the arm stays straight
+// (extendWhileStraight). The junction's node itself when fewer than two arms give a line,
 // or when that point lies outside the tubes the lines were fitted in (withinTubes): the
 // junctions', those of the bones between a knot's junctions and of the arms' bones out to
 // the lines' reach. Where arms part at a small angle their tubes overlap far beyond the
@@ -89,6 +112,7 @@ Point forkPoint(const SkeletonGraph& skeleton, const std::vector<std::vector<int
                 const JunctionGroups& groups, const std::vector<int>& junctions) {
     const Point& node = skeleton.nodes[std::size_t(junctions.front())];
     constexpr double kPull = 1e-3;  // towards the node, so that parallel arms still give one point
+    // Out to this the line takes every node of the arm; beyond, only while the arm is straight.
     // Farther, a bent arm's line misses the fork; nearer, a noisy arm's wavers. Chosen on the Y
     // and the star over ten samples each (docs/benchmarks.md#branch-measures).
     constexpr double kArmLineReach = 5.0;
@@ -103,13 +127,16 @@ Point forkPoint(const SkeletonGraph& skeleton, const std::vector<std::vector<int
             const bool inner = groups.isInnerBone(arm);
             std::vector<int> far;
             double along = 0.0;
+            std::size_t beyondReach = arm.size();  // the first node past the reach
             for (std::size_t i = 1; i < arm.size() && (inner || along <= kArmLineReach * radius); ++i) {
                 along += (skeleton.nodes[std::size_t(arm[i])] - skeleton.nodes[std::size_t(arm[i - 1])]).norm();
                 tubeBones.push_back({arm[i - 1], arm[i]});
                 if (!inner && along >= radius && along <= kArmLineReach * radius) far.push_back(arm[i]);
+                if (along > kArmLineReach * radius) beyondReach = std::min(beyondReach, i);
             }
             if (inner) continue;
             if (far.size() < 2) continue;
+            extendWhileStraight(skeleton, neighbours, arm, beyondReach, radius, far);
             const LocalPlane fit = fitLocalPlane(skeleton.nodes, far);
             const Point direction = fit.axes.col(2);
             const Eigen::Matrix3d across = Eigen::Matrix3d::Identity() - direction * direction.transpose();
