@@ -105,11 +105,13 @@ void printParameterHelp(const ParameterInfo& p) {
     const std::string text =
         std::string(p.help) + " [" + (p.type == ValueType::Switch ? (defaultValue(p.id) != 0 ? "on" : "off") : value) + "]";
     constexpr std::size_t indent = 24, width = 80;
-    std::string line = head.size() + 1 < indent ? head + std::string(indent - head.size(), ' ') : head;
-    if (line.size() > indent) {
+    // The help starts in the indent's column, after at least one space, or on the next line.
+    std::string line = head;
+    if (line.size() + 1 > indent) {
         std::printf("%s\n", line.c_str());
-        line = std::string(indent, ' ');
+        line.clear();
     }
+    line.resize(indent, ' ');
     std::size_t start = 0;
     while (start < text.size()) {
         const std::size_t end = text.find(' ', start);

@@ -176,6 +176,9 @@ for option in --contracted --correspondence --k --wl --wh --sl --max-wl --max-wh
               --paper --report --force --quiet; do
   grep -q -- "$option" help.txt || fail "--help does not document $option"
 done
+# An option's help starts after a space or on the next line, never glued to the option.
+glued=$(grep -E -- '^  --[a-z-]+ [NX][A-Za-z]|^  --([a-z-]+), --no-\1[^ ]' help.txt || true)
+[ -z "$glued" ] || fail "--help runs an option into its help: $glued"
 # Each option of the parameter table: its line, its help, and the library's default last.
 flat=$(tr '\n' ' ' <help.txt | tr -s ' ')
 explains() {  # option, words of its help, default
