@@ -479,6 +479,7 @@ py::dict reportDict(const SkeletonResult& r) {
     d["multi_resolution"] = q.points < q.inputPoints;
     d["outliers"] = q.outliers + q.inputOutliers;
     d["denoising_passes"] = contraction.denoisingPasses;
+    d["sheet_patches"] = q.sheets ? q.sheets->patches : 0;  // flat patches moved onto their medial axes
     py::list warnings;
     for (const QualityWarning& w : q.warnings()) {
         py::dict warning = problemDict(w.problem);

@@ -30,3 +30,13 @@ def y_shape(count=4500, radius=0.08, seed=2):
     arms = [tube([0, 0, 0], [np.cos(a), np.sin(a), 0], radius, count // 3, rng)
             for a in (np.pi / 2, np.pi / 2 + 2 * np.pi / 3, np.pi / 2 + 4 * np.pi / 3)]
     return np.concatenate(arms)
+
+
+def plate_with_two_holes(count=6000, seed=5):
+    """A square plate 1.6 wide, one layer of points, with two round holes: two cycles."""
+    rng = np.random.default_rng(seed)
+    points = rng.uniform(0, 1.6, (3 * count, 2))
+    outside = (np.hypot(points[:, 0] - 0.45, points[:, 1] - 0.8) > 0.25) & \
+              (np.hypot(points[:, 0] - 1.15, points[:, 1] - 0.8) > 0.25)
+    points = points[outside][:count]
+    return np.concatenate([points, np.zeros((len(points), 1))], axis=1)

@@ -65,6 +65,18 @@ def test_a_bridged_gap_is_an_inferred_bone():
     assert not pcskeleton.Skeleton(s.nodes, s.edges).inferred.any()
 
 
+def test_a_plate_gets_a_loop_around_each_hole_and_sheets_false_keeps_the_papers_thinning(torus_skeleton):
+    plate = shapes.plate_with_two_holes()
+    s = pcskeleton.skeletonize(plate)
+    assert s.report["sheet_patches"] == 1
+    assert s.report["topology"]["cycles"] == 2
+    assert s.report["topology"]["tips"] <= 2
+    off = pcskeleton.skeletonize(plate, sheets=False)
+    assert off.report["sheet_patches"] == 0
+    assert "Sheets: off." in off.report["text"]
+    assert torus_skeleton.report["sheet_patches"] == 0
+
+
 def test_noisy_y_keeps_three_tips():
     points = shapes.y_shape() + np.random.default_rng(3).normal(0, 0.005, (4500, 3))
     assert pcskeleton.skeletonize(points).report["topology"]["tips"] == 3

@@ -33,6 +33,12 @@ grep -q "^Contraction: .* converged" knot.log || { cat knot.log; fail "the repor
 grep -q "^No warnings." knot.log || { cat knot.log; fail "a clean knot should give no warning"; }
 grep -q "^Denoising: none (automatic: surface noise 0.0[0-9]*, a clean cloud)." knot.log \
   || { cat knot.log; fail "the report does not say the clean knot was not denoised"; }
+grep -q "^Sheets: none wide and flat enough to be moved onto their medial axes.$" knot.log \
+  || { cat knot.log; fail "the report does not say the knot has no flat sheet"; }
+# --no-sheets: the report says so; the knot has no sheet, so its skeleton is the same.
+"$PCSKELETON" $M/knot.off -o knot_no_sheets.ply --no-sheets --report knot_no_sheets.txt --quiet
+grep -q "^Sheets: off.$" knot_no_sheets.txt || { cat knot_no_sheets.txt; fail "--no-sheets: the report does not say so"; }
+cmp -s knot.ply knot_no_sheets.ply || fail "--no-sheets changed the skeleton of the knot, which has no sheet"
 grep -q "^Tip extension: [0-9]* limbs extended" elephant.log || { cat elephant.log; fail "the elephant's limbs were not extended"; }
 
 # --report writes the same report to a file; an unconverged run warns and names the fix.
@@ -171,7 +177,7 @@ expected_version="$(sed -n 's/^project(pcskeleton VERSION \([0-9.]*\) .*/\1/p' "
 # --help documents every option with its default.
 "$PCSKELETON" --help >help.txt
 for option in --contracted --correspondence --k --wl --wh --sl --max-wl --max-wh --row-limit --iterations \
-              --threshold --radius --link-limit --gap-limit --loop-opening --loop-clearance --min-hole --uniform-point-weights --level-set --no-extend-tips --refine --no-refine --no-recentre --keep-outliers --outlier-isolation \
+              --threshold --radius --link-limit --gap-limit --loop-opening --loop-clearance --min-hole --uniform-point-weights --level-set --no-extend-tips --refine --no-refine --no-sheets --no-recentre --keep-outliers --outlier-isolation \
               --outlier-local --outlier-cluster --denoise --contracted-points --full-resolution --memory-limit \
               --paper --report --force --quiet; do
   grep -q -- "$option" help.txt || fail "--help does not document $option"
@@ -192,6 +198,7 @@ explains "--gap-limit X" "(an occluded or missing stretch of the scan), a bone j
 explains "--loop-opening X" "narrower than this many tube radii" "0 opens none. [1"
 explains "--loop-clearance X" "within which that bone must pass a point" "is lost. [0.35"
 explains "--refine, --no-refine" "Clean what noise leaves" "[on"
+explains "--sheets, --no-sheets" "onto its medial axis within its plane" "[on"
 explains "--keep-outliers, --no-keep-outliers" "Contract every point" "[off"
 
 # --paper means one thing: the paper's pipeline first, then every other option, in any order.

@@ -8,11 +8,13 @@
 #include "pcskeleton/contraction/contraction_memory.h"
 #include "pcskeleton/internal/stopwatch.h"
 #include "pcskeleton/skeleton/skeleton_embedding.h"
+#include "pcskeleton/skeleton/sheet_collapse.h"
 #include "pcskeleton/skeleton/skeleton_thinning.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 namespace pcskeleton {
@@ -38,7 +40,15 @@ void thinAndEmbed(const NormalizedCloud& cloud, const OneRings& rings, const Poi
     const double radius = parameters.nodeSpacing * cloud.diagonal;
     const double maxLinkLength = parameters.linkLimit > 0 ? parameters.linkLimit * radius
                                                           : std::numeric_limits<double>::infinity();
-    const ThinnedGraph thinned = thinContractedPoints(cloud.points, contracted, rings, radius, maxLinkLength, progress);
+    // Flat sheets that contraction cannot thin, onto their medial axes first.
+    PointList collapsed;
+    std::optional<SheetCollapseReport> sheets;
+    if (parameters.collapseSheets) {
+        collapsed = contracted;
+        sheets = collapseSheets(cloud.points, collapsed, rings, radius);
+    }
+    const PointList& thinnedPoints = parameters.collapseSheets ? collapsed : contracted;
+    const ThinnedGraph thinned = thinContractedPoints(cloud.points, thinnedPoints, rings, radius, maxLinkLength, progress);
     result.seconds.thinning = stage.seconds();
 
     stage.restart();
@@ -65,7 +75,7 @@ void thinAndEmbed(const NormalizedCloud& cloud, const OneRings& rings, const Poi
     // After tip extension: an extended limb ends at the edge of its data, so the bridge spans
     // the gap in the data and nothing more.
     const GapBridgingReport bridging = bridgeGaps(result.skeleton, nodeSpacing, parameters.gapLimit);
-    result.quality = assessSkeleton(result.skeleton, cloud, rings, contracted, nodeSpacing);
+    result.quality = assessSkeleton(result.skeleton, cloud, rings, thinnedPoints, nodeSpacing);
     if (!parameters.refine) {
         for (LoopToOpen& loop : contactLoops(result.skeleton, points, parameters.refinementLimits)) {
             result.quality.contactLoops.push_back(std::move(loop.cycle));
@@ -82,6 +92,7 @@ void thinAndEmbed(const NormalizedCloud& cloud, const OneRings& rings, const Poi
     // A re-centred node is off its points' centre by design, not outside the shape.
     std::vector<int>& outside = result.quality.nodesOutside;
     for (int moved : recentering.nodes) outside.erase(std::remove(outside.begin(), outside.end(), moved), outside.end());
+    result.quality.sheets = sheets;
     if (parameters.recentre) result.quality.recentering = recentering;
     if (parameters.refine) result.quality.refinement = refinement;
     if (parameters.gapLimit > 0) result.quality.gapBridging = bridging;

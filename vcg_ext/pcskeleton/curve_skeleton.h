@@ -37,6 +37,9 @@ struct SkeletonGraphParameters {
     // Part of refinement: loops narrower than their tube opened where parts touch, bones
     // straight across a gap cut (skeleton_structure.h).
     RefinementLimits refinementLimits;
+    // Move the points of wide one-layer flat sheets that contraction left flat (plates,
+    // discs) onto their medial axes before thinning (sheet_collapse.h).
+    bool collapseSheets = true;
     // Move nodes whose points cover one side of their bone only (one-view scans, holes) to
     // the centre of the circle through those points (node_recentering.h).
     bool recentre = true;
@@ -72,12 +75,13 @@ struct SkeletonParameters {
     ResolutionParameters resolution;
 
     // Turns off every step that is not the paper's (outlier detection, denoising, the
-    // stretched-link limit, re-centring, refinement, gap bridging, tip extension, the
-    // subsample), keeping every other setting.
+    // stretched-link limit, the sheets' medial axes, re-centring, refinement, gap bridging,
+    // tip extension, the subsample), keeping every other setting.
     void keepToThePaper() {
         resolution.maxContractedPoints = 0;
         contraction.outliers.detect = false;
         contraction.denoisingPasses = 0;
+        graph.collapseSheets = false;
         graph.recentre = false;
         graph.refine = false;
         graph.extendTips = false;

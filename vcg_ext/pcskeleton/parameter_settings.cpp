@@ -38,6 +38,7 @@ void visitField(Settings& s, Parameter id, Field&& visit) {
         case Parameter::MemoryLimit: return visit(s.skeleton.resolution.memoryLimit);
         case Parameter::NodeSpacing: return visit(t.nodeSpacing);
         case Parameter::ExtendTips: return visit(t.extendTips);
+        case Parameter::Sheets: return visit(t.collapseSheets);
         case Parameter::Recentre: return visit(t.recentre);
         case Parameter::Refinement: return visit(t.refine);
         case Parameter::GapLimit: return visit(t.gapLimit);

@@ -33,6 +33,7 @@ enum class Parameter {
     MemoryLimit,
     NodeSpacing,
     ExtendTips,
+    Sheets,
     Recentre,
     Refinement,
     GapLimit,

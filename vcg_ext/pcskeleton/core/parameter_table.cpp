@@ -104,6 +104,12 @@ const std::vector<ParameterInfo> kTable = {
      "tip extension", "Extend tips to the shape's ends", "extendTips",
      "Extend every limb along its direction to where its tip's points end: contraction pulls the ends of limbs "
      "inwards. Off: the tips stay where contraction left them (the paper's skeleton)."},
+    {Parameter::Sheets, "sheets", V::Switch, S::Thinning, kAdvanced, kStraight,
+     "the sheets' medial axes", "Move flat sheets onto their medial axes", kNotInTheDialogs,
+     "Before thinning, move the points of a wide flat sheet of a single layer that contraction left flat (a "
+     "plate, a disc, a bracket's walls: the Laplacian of a flat patch is zero) onto its medial axis within its "
+     "plane, so that a plate gives a loop around each hole instead of a hub of long bones. Off: thinning takes "
+     "the contracted points as they are (the paper's)."},
     {Parameter::Recentre, "recentre", V::Switch, S::Thinning, kCommon, kStraight,
      "re-centring", "Re-centre nodes of one-sided parts", "recentre",
      "Move a node whose points cover one side of its bone only (a scan from one side, a hole) to the centre of "

@@ -251,6 +251,12 @@ std::string describeFindings(const SkeletonQuality& q) {
     }
     s << counted(q.outliers, "outlier", "outliers") << " set aside (no node); " << q.uncontractedPoints
       << " did not contract.\n";
+    s << "Sheets: ";
+    if (!q.sheets) s << "off.\n";
+    else if (q.sheets->patches == 0) s << "none wide and flat enough to be moved onto their medial axes.\n";
+    else s << counted(std::size_t(q.sheets->patches), "flat patch", "flat patches") << " ("
+           << counted(q.sheets->points, "point", "points") << ") moved onto "
+           << (q.sheets->patches == 1 ? "its medial axis" : "their medial axes") << " before thinning.\n";
     s << "Tip extension: ";
     if (!q.tipExtension) s << "off.\n";
     else if (q.tipExtension->extendedTips == 0) s << "no limb to extend.\n";

@@ -17,6 +17,7 @@
 #include "pcskeleton/contraction/laplacian_contraction.h"
 #include "pcskeleton/skeleton/skeleton_graph.h"
 #include "pcskeleton/finishing/node_recentering.h"
+#include "pcskeleton/skeleton/sheet_collapse.h"
 #include "pcskeleton/finishing/gap_bridging.h"
 #include "pcskeleton/finishing/skeleton_refinement.h"
 #include "pcskeleton/finishing/tip_extension.h"
@@ -77,7 +78,8 @@ struct SkeletonQuality {
     // likewise.
     std::vector<std::vector<int>> filledLoops;
 
-    // The finishing steps; each empty when it was off.
+    // The steps after contraction that are not the paper's; each empty when it was off.
+    std::optional<SheetCollapseReport> sheets;
     std::optional<RecenteringReport> recentering;
     std::optional<RefinementReport> refinement;
     std::optional<GapBridgingReport> gapBridging;

@@ -16,4 +16,12 @@ inline double median(std::vector<double> values) {
     return *middle;
 }
 
+// The value that a `share` (0 to 1) of `values` do not exceed: the one at that place in
+// their order, by nth_element. `values` must not be empty.
+inline double quantile(std::vector<double> values, double share) {
+    const auto place = values.begin() + std::ptrdiff_t(share * double(values.size() - 1));
+    std::nth_element(values.begin(), place, values.end());
+    return *place;
+}
+
 }  // namespace pcskeleton

@@ -1,0 +1,108 @@
+// Sheets onto their medial axes: a one-sided plate with two holes gives a loop around each
+// hole and no hub, a disc one node at its centre; tubes, a thick closed plate and a narrow
+// leaf are left to contraction; the paper's pipeline does without.
+#include <pcskeleton/skeleton/sheet_collapse.h>
+#include <pcskeleton/curve_skeleton.h>
+#include "support/sampled_shapes.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace pcskeleton;
+
+namespace {
+
+constexpr std::size_t kPoints = 6000;
+
+// A square plate 1.6 wide in the plane z = 0, with round holes of radius 0.25 around
+// (0.45, 0.8) and (1.15, 0.8), one layer of points.
+PointList plateWithTwoHoles(std::uint32_t seed) {
+    return shapes::sample(shapes::sheet([](double u, double v) { return Point(1.6 * u, 1.6 * v, 0); }, 64, 64,
+                                        [](double u, double v) {
+                                            return std::hypot(u - 0.28, v - 0.5) > 0.16 &&
+                                                   std::hypot(u - 0.72, v - 0.5) > 0.16;
+                                        }),
+                          kPoints, seed);
+}
+
+PointList disc(double radius, std::uint32_t seed) {
+    return shapes::sample(shapes::sheet([radius](double u, double v) {
+                              return Point(radius * u * std::cos(2 * M_PI * v), radius * u * std::sin(2 * M_PI * v), 0);
+                          }, 24, 96),
+                          kPoints, seed);
+}
+
+// The surface of a closed box `width` x `width` x `thickness`: two parallel faces and a rim.
+PointList closedBox(double width, double thickness, std::uint32_t seed) {
+    shapes::Triangles box;
+    const auto add = [&box](const std::function<Point(double, double)>& map) {
+        const shapes::Triangles face = shapes::sheet(map, 32, 32);
+        box.insert(box.end(), face.begin(), face.end());
+    };
+    for (double z : {0.0, thickness}) add([=](double u, double v) { return Point(width * u, width * v, z); });
+    for (double y : {0.0, width}) add([=](double u, double v) { return Point(width * u, y, thickness * v); });
+    for (double x : {0.0, width}) add([=](double u, double v) { return Point(x, width * u, thickness * v); });
+    return shapes::sample(box, kPoints, seed);
+}
+
+}  // namespace
+
+TEST(SheetCollapse, APlateGivesALoopAroundEachHoleAndNoHub) {
+    for (std::uint32_t seed : {1u, 2u}) {
+        const SkeletonResult r = computeCurveSkeleton(plateWithTwoHoles(seed));
+        ASSERT_TRUE(r.quality.sheets);
+        EXPECT_EQ(r.quality.sheets->patches, 1) << "seed " << seed;
+        const SkeletonTopology t = analyseTopology(r.skeleton);
+        EXPECT_EQ(t.cycles, 2) << describe(t) << ", seed " << seed;
+        EXPECT_LE(t.tips, 2) << describe(t) << ", seed " << seed;
+        // On the plate, around the holes: no node in a hole, none off the plane.
+        for (const Point& node : r.skeleton.nodes) {
+            EXPECT_NEAR(node.z(), 0.0, 1e-9);
+            EXPECT_GT(std::hypot(node.x() - 0.45, node.y() - 0.8), 0.25);
+            EXPECT_GT(std::hypot(node.x() - 1.15, node.y() - 0.8), 0.25);
+        }
+    }
+    // Without it, thinning makes the plate's flat middle a hub of long bones to its rim.
+    SkeletonParameters off;
+    off.graph.collapseSheets = false;
+    const SkeletonResult hub = computeCurveSkeleton(plateWithTwoHoles(1), off);
+    EXPECT_FALSE(hub.quality.sheets);
+    EXPECT_GT(analyseTopology(hub.skeleton).tips, 2) << describe(analyseTopology(hub.skeleton));
+}
+
+TEST(SheetCollapse, ADiscGathersAtItsCentre) {
+    // Its medial axis is its centre (on a grid, the thinning can wear a round shape away to
+    // nothing: then its deepest cell stands for it).
+    for (std::uint32_t seed : {3u, 4u}) {
+        const SkeletonResult r = computeCurveSkeleton(disc(0.8, seed));
+        const SkeletonTopology t = analyseTopology(r.skeleton);
+        EXPECT_EQ(t.cycles, 0) << describe(t);
+        EXPECT_EQ(t.components, 1) << describe(t);
+        for (const Point& node : r.skeleton.nodes) EXPECT_LT(node.norm(), 0.1) << describe(t);
+    }
+}
+
+TEST(SheetCollapse, TubesAThickClosedPlateAndANarrowLeafAreLeftToContraction) {
+    // A tube whose wall is flat at the sheet test's scale: its strips narrow as it contracts.
+    const SkeletonResult tube = computeCurveSkeleton(shapes::cylinder(kPoints, 0.4, 1.6, true, 4));
+    ASSERT_TRUE(tube.quality.sheets);
+    EXPECT_EQ(tube.quality.sheets->patches, 0);
+    // Each face of a closed plate has the other face across it.
+    const SkeletonResult box = computeCurveSkeleton(closedBox(1.6, 0.3, 5));
+    ASSERT_TRUE(box.quality.sheets);
+    EXPECT_EQ(box.quality.sheets->patches, 0);
+    // A leaf blade 0.2 wide: narrower than the patches moved.
+    const PointList blade = shapes::sample(
+        shapes::sheet([](double u, double v) { return Point(1.6 * u, 0.2 * v, 0.3 * std::sin(M_PI * u)); }, 64, 8),
+        kPoints, 6);
+    const SkeletonResult leaf = computeCurveSkeleton(blade);
+    ASSERT_TRUE(leaf.quality.sheets);
+    EXPECT_EQ(leaf.quality.sheets->patches, 0);
+}
+
+TEST(SheetCollapse, ThePapersPipelineThinsTheContractedPointsAsTheyAre) {
+    const SkeletonResult r = computeCurveSkeleton(plateWithTwoHoles(1), SkeletonParameters::paper());
+    EXPECT_FALSE(r.quality.sheets);
+    EXPECT_NE(describe(r.quality).find("Sheets: off."), std::string::npos);
+}
