@@ -48,6 +48,10 @@ constexpr double kBandRadii = 0.5;
 constexpr double kCellRadii = 0.5;
 constexpr double kGapSpacings = 2.5;
 constexpr double kGapQuantile = 0.9;
+// Bounds on the grid's work where the node spacing is tiny against the patch or against its
+// point spacing (a user's setting on millions of points): coarser cells instead.
+constexpr double kLargestGridSide = 4096;
+constexpr double kMostClosingCells = 16;
 constexpr double kSpurRadii = 2.0;
 
 struct Neighbourhoods {
@@ -262,8 +266,9 @@ void moveOntoAxis(const PointList& original, const PointIndex& index, const std:
         index.nearest(original[std::size_t(i)], 2, found);
         if (found.size() == 2) spacing.push_back((original[std::size_t(found[1])] - original[std::size_t(i)]).norm());
     }
-    const double cell = kCellRadii * radius;
-    const double gap = spacing.empty() ? cell : quantile(spacing, kGapQuantile);
+    const double gap = spacing.empty() ? radius : quantile(spacing, kGapQuantile);
+    const double cell = std::max({kCellRadii * radius, std::max(maxU - minU, maxV - minV) / kLargestGridSide,
+                                  kGapSpacings * gap / kMostClosingCells});
     const int close = std::max({1, int(std::ceil(kGapSpacings * gap / cell)), int(std::ceil(radius / cell - 1e-9))});
     const int margin = close + 2;
     Grid occupied(int((maxU - minU) / cell) + 1 + 2 * margin, int((maxV - minV) / cell) + 1 + 2 * margin);
