@@ -306,13 +306,18 @@ void moveOntoAxis(const PointList& original, const PointIndex& index, const std:
             }
         }
     }
+    // A point keeps its place within its cell: moved to the same cell, points stay distinct
+    // (the spatial search of thinning cannot split thousands of equal points).
+    const auto cellCorner = [&](std::size_t c, const Point& axis, double low) {
+        return low + double(int((axis == u ? c % std::size_t(shape.width) : c / std::size_t(shape.width))) - margin) * cell;
+    };
     for (std::size_t k = 0; k < patch.size(); ++k) {
         if (nearestAxisCell[cellOf[k]] < 0) continue;  // a piece of the shape without axis: left as it is
         const auto target = std::size_t(nearestAxisCell[cellOf[k]]);
-        const double au = minU + (double(int(target % std::size_t(shape.width)) - margin) + 0.5) * cell;
-        const double av = minV + (double(int(target / std::size_t(shape.width)) - margin) + 0.5) * cell;
-        const Point& p = original[std::size_t(patch[k])];
-        contracted[std::size_t(patch[k])] = plane.centroid + au * u + av * v + (p - plane.centroid).dot(normal) * normal;
+        const Point d = original[std::size_t(patch[k])] - plane.centroid;
+        const double au = cellCorner(target, u, minU) + (d.dot(u) - cellCorner(cellOf[k], u, minU));
+        const double av = cellCorner(target, v, minV) + (d.dot(v) - cellCorner(cellOf[k], v, minV));
+        contracted[std::size_t(patch[k])] = plane.centroid + au * u + av * v + d.dot(normal) * normal;
     }
 }
 

@@ -18,7 +18,7 @@
 //    closed over gaps narrower than the thinning radius, and thinned to its medial axis
 //    (its holes kept); spurs shorter than two thinning radii are cut off.
 // 4. Each of its points moves to the axis cell nearest it across the patch, keeping its
-//    height above the plane.
+//    place within its cell and its height above the plane.
 #pragma once
 
 #include "pcskeleton/contraction/one_ring.h"
