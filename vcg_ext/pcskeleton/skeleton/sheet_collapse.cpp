@@ -77,6 +77,18 @@ Neighbourhoods sheetNeighbourhoods(const PointList& points, const PointIndex& in
     return n;
 }
 
+// Adds to `members` every point reached from them through 1-rings, transitively, that
+// `joins` accepts (it marks what it accepts, so that no point is added twice).
+template <typename Joins>
+void growAlongRings(const OneRings& rings, std::vector<int>& members, const Joins& joins) {
+    for (std::size_t k = 0; k < members.size(); ++k) {
+        const std::size_t i = std::size_t(members[k]);
+        for (const int* j = rings.ringBegin(i); j != rings.ringEnd(i); ++j) {
+            if (joins(std::size_t(*j))) members.push_back(*j);
+        }
+    }
+}
+
 // Sheet points joined by 1-rings, each facing within kFacingDegrees of its patch's first point.
 std::vector<std::vector<int>> flatPatches(const Neighbourhoods& n, const OneRings& rings) {
     const double facing = std::cos(kFacingDegrees * M_PI / 180.0);
@@ -86,15 +98,11 @@ std::vector<std::vector<int>> flatPatches(const Neighbourhoods& n, const OneRing
         if (!n.sheet[seed] || assigned[seed]) continue;
         std::vector<int> patch{int(seed)};
         assigned[seed] = 1;
-        for (std::size_t k = 0; k < patch.size(); ++k) {
-            const std::size_t i = std::size_t(patch[k]);
-            for (const int* j = rings.ringBegin(i); j != rings.ringEnd(i); ++j) {
-                const std::size_t m = std::size_t(*j);
-                if (!n.sheet[m] || assigned[m] || std::abs(n.normal[m].dot(n.normal[seed])) < facing) continue;
-                assigned[m] = 1;
-                patch.push_back(*j);
-            }
-        }
+        growAlongRings(rings, patch, [&](std::size_t m) {
+            if (!n.sheet[m] || assigned[m] || std::abs(n.normal[m].dot(n.normal[seed])) < facing) return false;
+            assigned[m] = 1;
+            return true;
+        });
         if (patch.size() >= kFewestPatchPoints) patches.push_back(std::move(patch));
     }
     return patches;
@@ -134,16 +142,12 @@ bool isOneLayerPlate(const PointList& original, const PointList& contracted, con
 void addBand(const PointList& original, const Neighbourhoods& n, const OneRings& rings, const LocalPlane& plane,
              double radius, std::vector<char>& taken, std::vector<int>& patch) {
     for (int i : patch) taken[std::size_t(i)] = 1;
-    for (std::size_t k = 0; k < patch.size(); ++k) {
-        const std::size_t i = std::size_t(patch[k]);
-        for (const int* j = rings.ringBegin(i); j != rings.ringEnd(i); ++j) {
-            const std::size_t m = std::size_t(*j);
-            if (taken[m] || n.sheet[m]) continue;
-            if (std::abs((original[m] - plane.centroid).dot(plane.axes.col(0))) > kBandRadii * radius) continue;
-            taken[m] = 1;
-            patch.push_back(*j);
-        }
-    }
+    growAlongRings(rings, patch, [&](std::size_t m) {
+        if (taken[m] || n.sheet[m]) return false;
+        if (std::abs((original[m] - plane.centroid).dot(plane.axes.col(0))) > kBandRadii * radius) return false;
+        taken[m] = 1;
+        return true;
+    });
 }
 
 // A binary image; cells outside it read as empty.
@@ -153,6 +157,8 @@ struct Grid {
 
     Grid(int w, int h) : width(w), height(h), cells(std::size_t(w) * std::size_t(h), 0) {}
     std::size_t at(int x, int y) const { return std::size_t(y) * std::size_t(width) + std::size_t(x); }
+    int x(std::size_t cell) const { return int(cell % std::size_t(width)); }
+    int y(std::size_t cell) const { return int(cell / std::size_t(width)); }
     bool set(int x, int y) const { return x >= 0 && y >= 0 && x < width && y < height && cells[at(x, y)]; }
     int neighbourCount(int x, int y) const {
         int count = 0;
@@ -227,28 +233,40 @@ void pruneSpurs(Grid& g, int rounds) {
     }
 }
 
-// The cell of the shape farthest (in steps between neighbours) from every empty cell: the
-// medial axis of a round shape, which the thinning can wear away to nothing.
-std::size_t deepestCell(const Grid& shape) {
-    std::vector<int> depth(shape.cells.size(), -1);
-    std::deque<std::size_t> queue;
-    for (std::size_t c = 0; c < shape.cells.size(); ++c) {
-        if (!shape.cells[c]) depth[c] = 0, queue.push_back(c);
-    }
-    std::size_t deepest = 0;
+// Breadth first from the cells `queue` holds into the set cells of `shape` (8-connected):
+// `reach(from, to)` is called once for each cell reached, `from` the cell it was reached from.
+// `visited` marks the cells already reached (the sources too).
+template <typename Reach>
+void spreadOverShape(const Grid& shape, std::deque<std::size_t> queue, std::vector<char>& visited, const Reach& reach) {
     while (!queue.empty()) {
         const std::size_t c = queue.front();
         queue.pop_front();
-        if (depth[c] > depth[deepest]) deepest = c;
-        const int x = int(c % std::size_t(shape.width)), y = int(c / std::size_t(shape.width));
         for (int dy = -1; dy <= 1; ++dy) {
             for (int dx = -1; dx <= 1; ++dx) {
-                if (!shape.set(x + dx, y + dy) || depth[shape.at(x + dx, y + dy)] >= 0) continue;
-                depth[shape.at(x + dx, y + dy)] = depth[c] + 1;
-                queue.push_back(shape.at(x + dx, y + dy));
+                const int x = shape.x(c) + dx, y = shape.y(c) + dy;
+                if (!shape.set(x, y) || visited[shape.at(x, y)]) continue;
+                visited[shape.at(x, y)] = 1;
+                reach(c, shape.at(x, y));
+                queue.push_back(shape.at(x, y));
             }
         }
     }
+}
+
+// The cell of the shape farthest (in steps between neighbours) from every empty cell: the
+// medial axis of a round shape, which the thinning can wear away to nothing.
+std::size_t deepestCell(const Grid& shape) {
+    std::vector<int> depth(shape.cells.size(), 0);
+    std::vector<char> visited(shape.cells.size(), 0);
+    std::deque<std::size_t> empty;
+    for (std::size_t c = 0; c < shape.cells.size(); ++c) {
+        if (!shape.cells[c]) visited[c] = 1, empty.push_back(c);
+    }
+    std::size_t deepest = 0;
+    spreadOverShape(shape, std::move(empty), visited, [&](std::size_t from, std::size_t to) {
+        depth[to] = depth[from] + 1;
+        if (depth[to] > depth[deepest]) deepest = to;
+    });
     return deepest;
 }
 
@@ -288,35 +306,22 @@ void moveOntoAxis(const PointList& original, const PointIndex& index, const std:
     // Each cell of the shape takes the axis cell nearest it across the shape (breadth first,
     // 8-connected): a point never jumps across a hole.
     std::vector<int> nearestAxisCell(axis.cells.size(), -1);
-    std::deque<std::size_t> queue;
+    std::vector<char> visited(axis.cells.size(), 0);
+    std::deque<std::size_t> axisCells;
     for (std::size_t c = 0; c < axis.cells.size(); ++c) {
-        if (axis.cells[c]) nearestAxisCell[c] = int(c), queue.push_back(c);
+        if (axis.cells[c]) nearestAxisCell[c] = int(c), visited[c] = 1, axisCells.push_back(c);
     }
-    while (!queue.empty()) {
-        const std::size_t c = queue.front();
-        queue.pop_front();
-        const int x = int(c % std::size_t(shape.width)), y = int(c / std::size_t(shape.width));
-        for (int dy = -1; dy <= 1; ++dy) {
-            for (int dx = -1; dx <= 1; ++dx) {
-                if (!shape.set(x + dx, y + dy)) continue;
-                const std::size_t next = shape.at(x + dx, y + dy);
-                if (nearestAxisCell[next] >= 0) continue;
-                nearestAxisCell[next] = nearestAxisCell[c];
-                queue.push_back(next);
-            }
-        }
-    }
-    // A point keeps its place within its cell: moved to the same cell, points stay distinct
-    // (the spatial search of thinning cannot split thousands of equal points).
-    const auto cellCorner = [&](std::size_t c, const Point& axis, double low) {
-        return low + double(int((axis == u ? c % std::size_t(shape.width) : c / std::size_t(shape.width))) - margin) * cell;
-    };
+    spreadOverShape(shape, std::move(axisCells), visited,
+                    [&](std::size_t from, std::size_t to) { nearestAxisCell[to] = nearestAxisCell[from]; });
+    // A point keeps its place within its cell, shifted by whole cells to the axis cell: moved
+    // to the same cell, points stay distinct (the spatial search of thinning cannot split
+    // thousands of equal points).
     for (std::size_t k = 0; k < patch.size(); ++k) {
         if (nearestAxisCell[cellOf[k]] < 0) continue;  // a piece of the shape without axis: left as it is
         const auto target = std::size_t(nearestAxisCell[cellOf[k]]);
         const Point d = original[std::size_t(patch[k])] - plane.centroid;
-        const double au = cellCorner(target, u, minU) + (d.dot(u) - cellCorner(cellOf[k], u, minU));
-        const double av = cellCorner(target, v, minV) + (d.dot(v) - cellCorner(cellOf[k], v, minV));
+        const double au = d.dot(u) + double(shape.x(target) - shape.x(cellOf[k])) * cell;
+        const double av = d.dot(v) + double(shape.y(target) - shape.y(cellOf[k])) * cell;
         contracted[std::size_t(patch[k])] = plane.centroid + au * u + av * v + d.dot(normal) * normal;
     }
 }
