@@ -5,6 +5,7 @@
 // usage: bench_contraction [SIZE ...] [--solver cholmod|eigen|both]
 //        default sizes: 10000 100000 1000000
 #include "run_in_child.h"
+#include "size_arguments.h"
 
 #include <pcskeleton/core/openmp_wait_policy.h>
 #include <pcskeleton/contraction/laplacian_contraction.h>
@@ -52,14 +53,21 @@ int main(int argc, char** argv) {
     pcskeleton::restartWithPassiveOpenMpWaits(argv);
     std::vector<std::size_t> sizes;
     std::vector<LinearSolver> solvers = {LinearSolver::Cholmod};
+    const char* usage = "bench_contraction [SIZE ...] [--solver cholmod|eigen|both]";
     for (int a = 1; a < argc; ++a) {
-        if (!std::strcmp(argv[a], "--solver") && a + 1 < argc) {
-            const std::string s = argv[++a];
-            solvers = s == "eigen" ? std::vector<LinearSolver>{LinearSolver::EigenSimplicial}
-                    : s == "both"  ? std::vector<LinearSolver>{LinearSolver::Cholmod, LinearSolver::EigenSimplicial}
-                                   : std::vector<LinearSolver>{LinearSolver::Cholmod};
+        if (!std::strcmp(argv[a], "--help")) {
+            std::printf("usage: %s\n", usage);
+            return 0;
+        } else if (!std::strcmp(argv[a], "--solver")) {
+            const std::string s = a + 1 < argc ? argv[++a] : "";
+            if (s == "eigen") solvers = {LinearSolver::EigenSimplicial};
+            else if (s == "both") solvers = {LinearSolver::Cholmod, LinearSolver::EigenSimplicial};
+            else if (s == "cholmod") solvers = {LinearSolver::Cholmod};
+            else exitWithUsage("--solver needs cholmod, eigen or both", s.c_str(), usage);
+        } else if (const unsigned long long n = pointCount(argv[a])) {
+            sizes.push_back(n);
         } else {
-            sizes.push_back(std::strtoull(argv[a], nullptr, 10));
+            exitWithUsage("not a size or an option", argv[a], usage);
         }
     }
     if (sizes.empty()) sizes = {10000, 100000, 1000000};

@@ -16,6 +16,7 @@
 // usage: bench_skeleton [SIZE ...] [--full-resolution] [--outliers SHARE]
 //        default sizes: 10000 100000 1000000 10000000
 #include "run_in_child.h"
+#include "size_arguments.h"
 
 #include <pcskeleton/core/openmp_wait_policy.h>
 #include <pcskeleton/curve_skeleton.h>
@@ -137,10 +138,24 @@ int main(int argc, char** argv) {
     std::vector<std::size_t> sizes;
     SkeletonParameters parameters;
     double outlierShare = 0.0;
+    const char* usage = "bench_skeleton [SIZE ...] [--full-resolution] [--outliers SHARE]";
     for (int a = 1; a < argc; ++a) {
-        if (std::strcmp(argv[a], "--full-resolution") == 0) parameters.resolution.maxContractedPoints = 0;
-        else if (std::strcmp(argv[a], "--outliers") == 0 && a + 1 < argc) outlierShare = std::atof(argv[++a]);
-        else sizes.push_back(std::strtoull(argv[a], nullptr, 10));
+        if (!std::strcmp(argv[a], "--help")) {
+            std::printf("usage: %s\n", usage);
+            return 0;
+        } else if (std::strcmp(argv[a], "--full-resolution") == 0) {
+            parameters.resolution.maxContractedPoints = 0;
+        } else if (std::strcmp(argv[a], "--outliers") == 0) {
+            char* end = nullptr;
+            if (a + 1 < argc) outlierShare = std::strtod(argv[++a], &end);
+            if (end == nullptr || *end != '\0' || !(outlierShare > 0 && outlierShare <= 10)) {
+                exitWithUsage("--outliers needs a share of the points from 0 to 10", argv[a], usage);
+            }
+        } else if (const unsigned long long n = pointCount(argv[a])) {
+            sizes.push_back(n);
+        } else {
+            exitWithUsage("not a size or an option", argv[a], usage);
+        }
     }
     if (sizes.empty()) sizes = {10000, 100000, 1000000, 10000000};
     const std::filesystem::path folder =
