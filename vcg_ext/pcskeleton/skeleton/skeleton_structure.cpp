@@ -18,6 +18,16 @@ namespace {
 // redundant: a few points of a real limb can be close to the body (its base), and noise
 // puts a few of a redundant one outside.
 constexpr double kCoveredShare = 0.9;
+// A node whose points lie across a flat strip (their second spread at most kStripSpread of
+// the first: a leaf or plate along its mid-line) holds in its tube the points out to the
+// strip's edge, all but the farthest tenth (kStripReachQuantile); its radius, a mean
+// distance, reaches about half as far. A tube's cross-section is a ring, whose two larger
+// spreads are equal, and a half tube's (one view) differ by a factor of about 5. A strip is
+// filled across: no gap between its points, along its width, wider than kStripGap of that
+// width (two thin limbs side by side that share a node are a strip with a gap).
+constexpr double kStripSpread = 0.05;
+constexpr double kStripReachQuantile = 0.9;
+constexpr double kStripGap = 0.1;
 // A node at a limb's end owning fewer than this share of the points of the skeleton's
 // median node is a straggler (stragglingEnds).
 constexpr double kStragglerShare = 0.1;
@@ -324,6 +334,33 @@ std::vector<Edge> bonesOverDataGaps(const SkeletonGraph& graph, const PointList&
     return bones;
 }
 
+namespace {
+
+// How far from node `n` its tube reaches (isRedundantLimb): its radius, or, across a flat
+// strip, the distance within which most of its points lie.
+double tubeReach(const SkeletonGraph& graph, int n, const PointList& points,
+                 const std::vector<std::vector<int>>& nodePoints) {
+    const std::vector<int>& own = nodePoints[std::size_t(n)];
+    const double radius = graph.radii[std::size_t(n)];
+    if (own.size() < 3) return radius;
+    const LocalPlane plane = fitLocalPlane(points, own);
+    if (plane.variances(1) > kStripSpread * plane.variances(2)) return radius;
+    std::vector<double> across, distances;
+    across.reserve(own.size());
+    distances.reserve(own.size());
+    for (int p : own) {
+        across.push_back((points[std::size_t(p)] - plane.centroid).dot(plane.axes.col(2)));
+        distances.push_back((points[std::size_t(p)] - graph.nodes[std::size_t(n)]).norm());
+    }
+    std::sort(across.begin(), across.end());
+    double widestGap = 0.0;
+    for (std::size_t k = 1; k < across.size(); ++k) widestGap = std::max(widestGap, across[k] - across[k - 1]);
+    if (widestGap > kStripGap * (across.back() - across.front())) return radius;
+    return std::max(radius, quantile(std::move(distances), kStripReachQuantile));
+}
+
+}  // namespace
+
 bool isRedundantLimb(const SkeletonGraph& graph, const Limb& limb, const PointList& points,
                      const std::vector<std::vector<int>>& nodePoints, double nodeSpacing) {
     if (!limb.atJunction || graph.pointNode.size() != points.size()) return false;
@@ -340,13 +377,15 @@ bool isRedundantLimb(const SkeletonGraph& graph, const Limb& limb, const PointLi
     std::size_t limbPoints = 0;
     for (std::size_t i = 0; i + 1 < limb.path.size(); ++i) limbPoints += nodePoints[limb.path[i]].size();
     if (limbPoints == 0) return false;
+    std::vector<double> reachOf(graph.nodeCount(), 0.0);
+    for (int n : others) reachOf[std::size_t(n)] = tubeReach(graph, n, points, nodePoints) + nodeSpacing;
     // A real limb is usually told after a few of its points: stop once too many are outside.
     const double allowedOutside = (1.0 - kCoveredShare) * double(limbPoints);
     std::size_t outside = 0;
     for (std::size_t i = 0; i + 1 < limb.path.size(); ++i) {
         for (int p : nodePoints[limb.path[i]]) {
             const bool covered = std::any_of(others.begin(), others.end(), [&](int n) {
-                return (points[p] - graph.nodes[n]).norm() <= graph.radii[n] + nodeSpacing;
+                return (points[p] - graph.nodes[n]).norm() <= reachOf[std::size_t(n)];
             });
             if (!covered && double(++outside) > allowedOutside) return false;
         }

@@ -5,9 +5,10 @@
 // - a spur is a limb shorter than the radius at its junction (its tip is inside the body
 //   it sprouts from) or than the node spacing;
 // - a limb is redundant when the rest of the skeleton already accounts for its points:
-//   nearly all of them lie in the tube (radius plus node spacing) of a node off the limb.
-//   Noise, gaps and one-sided scans sprout such limbs from the side of a bone; a real limb,
-//   however short, has points beyond the body it leaves;
+//   nearly all of them lie in the tube (radius plus node spacing; across a flat strip, out
+//   to the strip's edge) of a node off the limb. Noise, gaps and one-sided scans sprout
+//   such limbs from the side of a bone, and a leaf's or plate's rim from its mid-line; a
+//   real limb, however short, has points beyond the body it leaves;
 // - a cycle is spurious when its hole is not there: the cycle's nodes lie closer to their
 //   centre than the tube around them is thick, or than the node spacing;
 // - two junctions are close when the bone path between them is shorter than the node
