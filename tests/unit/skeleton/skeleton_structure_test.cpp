@@ -139,11 +139,11 @@ TEST(SkeletonStructure, ALimbToAFlatStripsEdgeIsRedundantAStalkPastItIsNot) {
     expectOneRedundantLimbAndOneReal(g, points, rimTip, stalkTip);
 }
 
-TEST(SkeletonStructure, TwoShortLegsSideBySideSharingANodeAreNotAStripOverEachOther) {
+TEST(SkeletonStructure, TwoShortLegsSideBySideSharingANodeAreNotAStrip) {
     // Two short thin legs, 0.6 apart, leave the chain's end through one shared node, which
     // sits nearer one of them (a junction's node is where the contracted points are). Its
-    // points are two rings, spread like a strip's but with a gap between them, so its tube
-    // is its radius and does not take in the far leg.
+    // points, two rings, spread like a strip's, but its bones go out along that width to
+    // the legs: no strip, so its tube is its radius and does not take in the far leg.
     SkeletonGraph g = straightChain();
     PointList points = wallPoints(g);
     const int shared = addNode(g, Point(1.1, 0.12, 0), 10);

@@ -22,12 +22,14 @@ constexpr double kCoveredShare = 0.9;
 // the first: a leaf or plate along its mid-line) holds in its tube the points out to the
 // strip's edge, all but the farthest tenth (kStripReachQuantile); its radius, a mean
 // distance, reaches about half as far. A tube's cross-section is a ring, whose two larger
-// spreads are equal, and a half tube's (one view) differ by a factor of about 5. A strip is
-// filled across: no gap between its points, along its width, wider than kStripGap of that
-// width (two thin limbs side by side that share a node are a strip with a gap).
+// spreads are equal, and a half tube's (one view) differ by a factor of about 5. A strip
+// lies across the skeleton: its width within kStripAcross (the cosine of 60 degrees) of
+// square to every bone at the node. A thin tube's node, whose points spread along its
+// bones, is no strip, nor is a node shared by two limbs side by side, whose bones go out
+// along the width to them.
 constexpr double kStripSpread = 0.05;
+constexpr double kStripAcross = 0.5;
 constexpr double kStripReachQuantile = 0.9;
-constexpr double kStripGap = 0.1;
 // A node at a limb's end owning fewer than this share of the points of the skeleton's
 // median node is a straggler (stragglingEnds).
 constexpr double kStragglerShare = 0.1;
@@ -338,24 +340,21 @@ namespace {
 
 // How far from node `n` its tube reaches (isRedundantLimb): its radius, or, across a flat
 // strip, the distance within which most of its points lie.
-double tubeReach(const SkeletonGraph& graph, int n, const PointList& points,
-                 const std::vector<std::vector<int>>& nodePoints) {
+double tubeReach(const SkeletonGraph& graph, const std::vector<std::vector<int>>& neighbours, int n,
+                 const PointList& points, const std::vector<std::vector<int>>& nodePoints) {
     const std::vector<int>& own = nodePoints[std::size_t(n)];
     const double radius = graph.radii[std::size_t(n)];
     if (own.size() < 3) return radius;
     const LocalPlane plane = fitLocalPlane(points, own);
     if (plane.variances(1) > kStripSpread * plane.variances(2)) return radius;
-    std::vector<double> across, distances;
-    across.reserve(own.size());
-    distances.reserve(own.size());
-    for (int p : own) {
-        across.push_back((points[std::size_t(p)] - plane.centroid).dot(plane.axes.col(2)));
-        distances.push_back((points[std::size_t(p)] - graph.nodes[std::size_t(n)]).norm());
+    const Point width = plane.axes.col(2);
+    for (int m : neighbours[std::size_t(n)]) {
+        const Point bone = (graph.nodes[std::size_t(m)] - graph.nodes[std::size_t(n)]).normalized();
+        if (std::abs(bone.dot(width)) > kStripAcross) return radius;
     }
-    std::sort(across.begin(), across.end());
-    double widestGap = 0.0;
-    for (std::size_t k = 1; k < across.size(); ++k) widestGap = std::max(widestGap, across[k] - across[k - 1]);
-    if (widestGap > kStripGap * (across.back() - across.front())) return radius;
+    std::vector<double> distances;
+    distances.reserve(own.size());
+    for (int p : own) distances.push_back((points[std::size_t(p)] - graph.nodes[std::size_t(n)]).norm());
     return std::max(radius, quantile(std::move(distances), kStripReachQuantile));
 }
 
@@ -377,8 +376,9 @@ bool isRedundantLimb(const SkeletonGraph& graph, const Limb& limb, const PointLi
     std::size_t limbPoints = 0;
     for (std::size_t i = 0; i + 1 < limb.path.size(); ++i) limbPoints += nodePoints[limb.path[i]].size();
     if (limbPoints == 0) return false;
+    const auto neighbours = adjacencyLists(graph.nodeCount(), graph.edges);
     std::vector<double> reachOf(graph.nodeCount(), 0.0);
-    for (int n : others) reachOf[std::size_t(n)] = tubeReach(graph, n, points, nodePoints) + nodeSpacing;
+    for (int n : others) reachOf[std::size_t(n)] = tubeReach(graph, neighbours, n, points, nodePoints) + nodeSpacing;
     // A real limb is usually told after a few of its points: stop once too many are outside.
     const double allowedOutside = (1.0 - kCoveredShare) * double(limbPoints);
     std::size_t outside = 0;
