@@ -330,7 +330,8 @@ $GRAPH check big.ply --cycles 1 --components 1 || fail "the subsampled torus has
 grep -q "^Input: 30000 points in 1 part" big_full.log || { cat big_full.log; fail "--full-resolution subsampled"; }
 "$PCSKELETON" big_torus.xyz -o big_few.ply --contracted-points 5000 2>big_few.log
 grep -q "multi-resolution: [1-4][0-9][0-9][0-9] contracted" big_few.log || { cat big_few.log; fail "--contracted-points 5000 ignored"; }
-expect_error 1 "--contracted-points must be at least 1" big_torus.xyz -o m.ply --contracted-points 0
+expect_error 1 "--contracted-points must be at least 100 (full resolution contracts every point)" big_torus.xyz -o m.ply --contracted-points 0
+expect_error 1 "--contracted-points must be at least 100" big_torus.xyz -o m.ply --contracted-points 9
 expect_error 1 "--memory-limit must be 0 (automatic) or a positive number" big_torus.xyz -o m.ply --memory-limit -1
 expect_error 1 "A skeleton of 30000 points, all 30000 of them contracted, needs about 0.081 GB.*more than the 0.05 GB allowed; at most [0-9]* contracted points would fit. Lower --contracted-points" \
   big_torus.xyz -o m.ply --full-resolution --memory-limit 0.05

@@ -33,6 +33,9 @@ TEST(ParameterSettings, ValuesTheLibraryRefusesAreRefusedWhenSet) {
     EXPECT_THROW(setParameter(s, Parameter::MaxIterations, 2.5), InvalidInput) << "not a whole number";
     EXPECT_THROW(setParameter(s, Parameter::NodeSpacing, 2), InvalidInput);
     EXPECT_THROW(setParameter(s, Parameter::ContractedPoints, 0), InvalidInput);
+    EXPECT_THROW(setParameter(s, Parameter::ContractedPoints, 9), InvalidInput)
+        << "too few to hold the neighbours contraction needs";
+    EXPECT_NO_THROW(setParameter(s, Parameter::ContractedPoints, 100));
     EXPECT_THROW(setParameter(s, Parameter::MemoryLimit, -1), InvalidInput);
     EXPECT_THROW(setParameter(s, Parameter::Resolution, 4), InvalidInput);
     EXPECT_THROW(setParameter(s, Parameter::Refinement, 0.5), InvalidInput);

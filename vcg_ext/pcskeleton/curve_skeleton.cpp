@@ -106,6 +106,13 @@ void thinAndEmbed(const NormalizedCloud& cloud, const OneRings& rings, const Poi
 }  // namespace
 
 void checkResolutionParameters(const ResolutionParameters& parameters) {
+    if (parameters.maxContractedPoints != 0 &&
+        parameters.maxContractedPoints < ResolutionParameters::kFewestContractedPoints) {
+        throw InvalidInput(Problem::aboutParameter(
+            Parameter::ContractedPoints, "must be at least " +
+                                             std::to_string(ResolutionParameters::kFewestContractedPoints) +
+                                             " (full resolution contracts every point)."));
+    }
     if (!(parameters.memoryLimit >= 0 && std::isfinite(parameters.memoryLimit))) {
         throw InvalidInput(Problem::aboutParameter(
             Parameter::MemoryLimit, "must be 0 (automatic) or a positive number of GB."));

@@ -57,6 +57,9 @@ struct ResolutionParameters {
     // point (the paper's). Not in the paper; chosen on the robustness suite at 100K points
     // and on the paper's tree (docs/benchmarks.md).
     std::size_t maxContractedPoints = 15000;
+    // The smallest subsample allowed: a few nodes' worth of points, so that the subsample
+    // always has the k nearest neighbours contraction needs (at most 30 plus the point).
+    static constexpr std::size_t kFewestContractedPoints = 100;
     // Work whose estimated peak memory exceeds this many bytes is refused before it starts;
     // 0 = what the machine and the process's limits allow (machine_memory.h).
     double memoryLimit = 0.0;

@@ -109,9 +109,9 @@ void setParameter(Settings& settings, Parameter id, double value) {
         const std::size_t current = settings.skeleton.resolution.maxContractedPoints;
         field = on ? 0.0 : double(current == 0 ? ResolutionParameters{}.maxContractedPoints : current);
     }
-    if (id == Parameter::ContractedPoints && field < 1) {
-        throw InvalidInput(Problem::aboutParameter(id, "must be at least 1 (full resolution contracts every point)."));
-    }
+    // 0 would be the library's full resolution, which has its own switch: as a number of
+    // contracted points it is too few, and the stage's check below says so.
+    if (id == Parameter::ContractedPoints && field < 1) field = 1;
     // The stage's check sees the value in settings that are otherwise the defaults.
     Settings trial;
     visitField(trial, id, [&](auto& f) { f = static_cast<std::decay_t<decltype(f)>>(field); });

@@ -80,7 +80,8 @@ const std::vector<ParameterInfo> kTable = {
     // ---- How many points are contracted (not in the paper) ----
     {Parameter::ContractedPoints, "contracted_points", V::Integer, S::Resolution, kAdvanced, kStraight,
      "the number of contracted points", "Contracted points at most", kNotInTheDialogs,
-     "A cloud of more points is contracted through a subsample of at most this many (unless at full resolution). "
+     "A cloud of more points is contracted through a subsample of at most this many, at least 100 (unless at full "
+     "resolution). "
      "Raise it for fine detail in huge scans. Up to 20000 the skeleton is the same on every CPU; above, a faster "
      "solver's result may differ in its last digits from one CPU to another."},
     {Parameter::FullResolution, "full_resolution", V::Switch, S::Resolution, kCommon, kStraight,
