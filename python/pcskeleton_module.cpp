@@ -187,7 +187,23 @@ py::dict helpOf(bool reconstruction) {
 
 // ---- Arrays ----------------------------------------------------------------------------
 
-PointList pointsFrom(const DoubleArray& array, const char* what) {
+// A float64 array of `object`'s numbers: integers and floats, converted as numpy converts
+// them. Booleans, complex numbers, strings and Python objects raise TypeError instead of
+// being cast (numpy's cast reads True as 1 and drops an imaginary part with only a warning).
+DoubleArray realArray(const py::object& object, const char* what) {
+    const py::array array = py::array::ensure(object);
+    const char kind = array ? array.dtype().kind() : 'O';
+    if (kind != 'i' && kind != 'u' && kind != 'f') {
+        const std::string got = array && py::isinstance<py::array>(object)
+                                    ? "an array of " + std::string(py::str(array.dtype()))
+                                    : std::string(py::str(py::type::of(object).attr("__name__")));
+        throw py::type_error(std::string(what) + " must be an array of real numbers; got " + got + ".");
+    }
+    return DoubleArray::ensure(array);
+}
+
+PointList pointsFrom(const py::object& object, const char* what) {
+    const DoubleArray array = realArray(object, what);
     if (array.ndim() != 2 || array.shape(1) != 3)
         throw InvalidInput(std::string(what) + " must be an array of shape (n, 3); got one of " +
                            std::to_string(array.ndim()) + " dimension(s)" +
@@ -510,13 +526,13 @@ PySkeleton skeletonFrom(SkeletonResult result) {
 
 // A skeleton built from arrays (a user's own, or one changed in numpy) must satisfy the
 // graph's invariants (invariantViolation), as the editor requires.
-SkeletonGraph graphFromArrays(const DoubleArray& nodes, const py::object& edges, const py::object& radii,
+SkeletonGraph graphFromArrays(const py::object& nodes, const py::object& edges, const py::object& radii,
                               const py::object& correspondence) {
     SkeletonGraph g;
     g.nodes = pointsFrom(nodes, "nodes");
     g.edges = indexRowsFrom<2>(edges, "edges");
     if (!radii.is_none()) {
-        const DoubleArray r = radii.cast<DoubleArray>();
+        const DoubleArray r = realArray(radii, "radii");
         g.radii.assign(r.data(), r.data() + r.size());
     }
     if (!correspondence.is_none()) {
@@ -552,7 +568,7 @@ class PyContraction {
     }
 
 public:
-    PyContraction(const DoubleArray& points, const py::dict& kwargs, const py::object& progress)
+    PyContraction(const py::object& points, const py::dict& kwargs, const py::object& progress)
         : points_(pointsFrom(points, "points")), settings_(settingsFrom(kwargs, false, "Contraction")) {
         withoutGil(progress, [&](const ProgressCallback& callback) {
             pipeline_ = std::make_unique<SkeletonPipeline>(points_, settings_.skeleton, callback);
@@ -627,7 +643,7 @@ PYBIND11_MODULE(_pcskeleton, m) {
     m.def("reconstruction_help", [] { return helpOf(true); });
 
     py::class_<PySkeleton>(m, "Skeleton")
-        .def(py::init([](const DoubleArray& nodes, const py::object& edges, const py::object& radii,
+        .def(py::init([](const py::object& nodes, const py::object& edges, const py::object& radii,
                          const py::object& correspondence) {
                  PySkeleton s;
                  s.graph = graphFromArrays(nodes, edges, radii, correspondence);
@@ -657,14 +673,14 @@ PYBIND11_MODULE(_pcskeleton, m) {
         .def_property_readonly("topology", [](const PySkeleton& s) { return topologyDict(analyseTopology(s.graph)); })
         .def("write", [](const PySkeleton& s, const std::string& path) { writeSkeleton(s.graph, path); }, py::arg("path"))
         .def("_measure_branches",
-             [](const PySkeleton& s, const DoubleArray& up, int root, const py::object& points) {
+             [](const PySkeleton& s, const py::object& up, int root, const py::object& points) {
                  const PointList axis = pointsFrom(up, "up");
                  if (axis.size() != 1) throw InvalidInput("up must be one direction of three numbers, e.g. (0, 0, 1).");
                  BranchOptions options;
                  options.up = axis[0];
                  options.root = root;
                  if (points.is_none()) return branchesDict(measureBranches(s.graph, options));
-                 const PointList input = pointsFrom(points.cast<DoubleArray>(), "points");
+                 const PointList input = pointsFrom(points, "points");
                  if (input.size() != s.graph.pointNode.size()) {
                      throw InvalidInput("points must be the " + std::to_string(s.graph.pointNode.size()) +
                                         " points the skeleton was computed from, one row each; got " +
@@ -686,16 +702,16 @@ PYBIND11_MODULE(_pcskeleton, m) {
             [](const py::tuple& state) {
                 if (state.size() != 7) throw InvalidInput("Not a pickled pcskeleton.Skeleton.");
                 PySkeleton s;
-                s.graph = graphFromArrays(state[0].cast<DoubleArray>(), state[1], state[2], state[3]);
+                s.graph = graphFromArrays(state[0], state[1], state[2], state[3]);
                 s.graph.inferred = indexRowsFrom<2>(state[4], "inferred");
                 const std::string problem = invariantViolation(s.graph);  // the inferred bones among the edges
                 if (!problem.empty()) throw InvalidInput("Not a valid pickled skeleton: " + problem + ".");
-                if (!state[5].is_none()) s.contracted = pointsFrom(state[5].cast<DoubleArray>(), "contracted");
+                if (!state[5].is_none()) s.contracted = pointsFrom(state[5], "contracted");
                 s.report = state[6];
                 return s;
             }));
 
-    m.def("_skeletonize", [](const DoubleArray& points, const py::dict& kwargs, const py::object& progress) {
+    m.def("_skeletonize", [](const py::object& points, const py::dict& kwargs, const py::object& progress) {
         const PointList input = pointsFrom(points, "points");
         const Settings settings = settingsFrom(kwargs, false, "skeletonize");
         return skeletonFrom(withoutGil(progress, [&](const ProgressCallback& callback) {
@@ -704,7 +720,7 @@ PYBIND11_MODULE(_pcskeleton, m) {
     });
 
     py::class_<PyContraction>(m, "_Contraction")
-        .def(py::init<const DoubleArray&, const py::dict&, const py::object&>())
+        .def(py::init<const py::object&, const py::dict&, const py::object&>())
         .def("iterate", &PyContraction::iterate, "One iteration; returns its report (a dict). Does nothing once finished.")
         .def_property_readonly("finished", &PyContraction::finished)
         .def_property_readonly("stop_reason", &PyContraction::stopReason)
@@ -712,7 +728,7 @@ PYBIND11_MODULE(_pcskeleton, m) {
         .def_property_readonly("points", &PyContraction::workingPoints)
         .def("_skeleton", &PyContraction::skeleton);
 
-    m.def("_reconstruct", [](const DoubleArray& points, const PySkeleton& skeleton, const py::dict& kwargs,
+    m.def("_reconstruct", [](const py::object& points, const PySkeleton& skeleton, const py::dict& kwargs,
                              const py::object& progress) {
         const PointList input = pointsFrom(points, "points");
         const Settings settings = settingsFrom(kwargs, true, "reconstruct");
@@ -745,10 +761,10 @@ PYBIND11_MODULE(_pcskeleton, m) {
         s.graph = readSkeleton(path);
         return s;
     }, py::arg("path"));
-    m.def("write_points", [](const DoubleArray& points, const std::string& path) {
+    m.def("write_points", [](const py::object& points, const std::string& path) {
         writePointCloud(pointsFrom(points, "points"), path);
     }, py::arg("points"), py::arg("path"));
-    m.def("write_mesh", [](const DoubleArray& vertices, const py::object& faces, const std::string& path) {
+    m.def("write_mesh", [](const py::object& vertices, const py::object& faces, const std::string& path) {
         TriangleMesh mesh;
         mesh.vertices = pointsFrom(vertices, "vertices");
         mesh.triangles = indexRowsFrom<3>(faces, "faces");

@@ -174,6 +174,28 @@ def test_unknown_keyword_or_wrong_type_is_a_type_error(torus_points):
         pcskeleton.skeletonize(torus_points, iterations="many")
 
 
+@pytest.mark.parametrize("points, got", [
+    ("scan.ply", "got str"),
+    (None, "got NoneType"),
+    (np.ones((20, 3), dtype=bool), "got an array of bool"),
+    (np.ones((20, 3), dtype=complex), "got an array of complex128"),
+    (np.array([[1.0, 2.0, "3"]] * 20, dtype=object), "got an array of object"),
+])
+def test_points_that_are_not_real_numbers_are_a_type_error_not_a_cast(points, got, torus_points, tmp_path):
+    # numpy's cast would read True as 1 and drop an imaginary part with only a warning.
+    message = "must be an array of real numbers; " + got
+    with pytest.raises(TypeError, match=message):
+        pcskeleton.skeletonize(points)
+    with pytest.raises(TypeError, match=message):
+        pcskeleton.write_points(points, str(tmp_path / "out.xyz"))
+    assert not (tmp_path / "out.xyz").exists()
+    skeleton = pcskeleton.skeletonize(torus_points)
+    with pytest.raises(TypeError, match=message):
+        pcskeleton.reconstruct(points, skeleton)
+    with pytest.raises(TypeError, match="nodes " + message):
+        pcskeleton.Skeleton(points, skeleton.edges)
+
+
 def test_malformed_files_raise_value_error(tmp_path):
     bad = tmp_path / "bad.ply"
     bad.write_bytes(b"ply\nformat binary_little_endian 1.0\nelement vertex 1000000\n"
