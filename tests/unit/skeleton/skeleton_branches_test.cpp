@@ -135,6 +135,22 @@ TEST(SkeletonBranches, BranchesAreMeasuredFromWhereTheArmsMeetNotFromTheJunction
     EXPECT_NEAR(measureBranches(far.graph).branches[0].length, 1.0, 0.01);
 }
 
+TEST(SkeletonBranches, NodesBetweenTheForkAndTheJunctionsNodeAddNoLength) {
+    // A stem runs on 0.2 past the fork at (0, 0, 1) to the junction's node, as where arms
+    // part at a small angle: the arms leave that node sideways and then run along their lines
+    // (at 45 degrees, from the fork). The stem ends at the fork, and its nodes beyond it are
+    // not walked out and back.
+    SkeletonGraph g = singleNode(Point::Zero());
+    const int junction = addChain(g, 0, Point(0, 0, 1.2), 12);
+    const int longTip = addChain(g, addChain(g, junction, Point(0.2, 0, 1.2), 1), Point(0.6, 0, 1.6), 4);
+    const int shortTip = addChain(g, addChain(g, junction, Point(-0.2, 0, 1.2), 1), Point(-0.4, 0, 1.4), 2);
+    const SkeletonBranches b = measureBranches(g);
+    EXPECT_NEAR(b.branches[0].length, 1.0, 0.005);
+    EXPECT_NEAR(b.branches[0].chord, 1.0, 0.005);
+    EXPECT_NEAR(branchEndingAt(b, longTip).length, 0.6 * std::sqrt(2.0), 0.005);
+    EXPECT_NEAR(branchEndingAt(b, shortTip).length, 0.4 * std::sqrt(2.0), 0.005);
+}
+
 TEST(SkeletonBranches, WhereTheArmsLinesMeetOutsideEveryTubeTheJunctionsNodeIsTaken) {
     // A tuning fork (radius 0.05): two prongs rise from 0.04 either side of the stem's top,
     // leaning in, so that their lines and the stem's meet at (0, 0, 3), far outside the

@@ -187,20 +187,41 @@ JunctionGroups groupJunctions(const SkeletonGraph& skeleton, const std::vector<s
     return groups;
 }
 
+// Moves the nodes at the front of `course` that lie behind its first point onto it: while
+// the next node lies nearer to that point than a node does, the node is not on the way from
+// there along the branch. A junction's fork point lies back along the arms from its node,
+// in the arms' overlap, and the nodes there would take the course out past the fork and
+// back. Moves none from `last` on; returns the index of the last node at the first point.
+std::size_t gatherBehindStart(std::vector<Point>& course, std::size_t last) {
+    const Point start = course.front();
+    std::size_t i = 1;
+    for (; i < last && (course[i + 1] - start).norm() < (course[i] - start).norm(); ++i) course[i] = start;
+    return i - 1;
+}
+
 // The course a branch is measured along: its nodes, a junction at either end at its fork
-// point, the others smoothed. The nodes scatter a little across the bone, and a zigzag is
-// longer than the bone, the more so with noise. Taubin's smoothing
-// (a step in, then a slightly larger step out) takes the zigzag out and leaves bends as
-// they are: a wave of k node spacings keeps (1 - 0.5 c)(1 + 0.53 c) of itself per round,
-// c = 1 - cos(2 pi / k): nothing of a zigzag (k = 2) stays, and nearly all of a wave many
-// spacings long.
+// point with the nodes behind it (gatherBehindStart), the others smoothed. The nodes scatter
+// a little across the bone, and a zigzag is longer than the bone, the more so with noise.
+// Taubin's smoothing (a step in, then a slightly larger step out) takes the zigzag out and
+// leaves bends as they are: a wave of k node spacings keeps (1 - 0.5 c)(1 + 0.53 c) of
+// itself per round, c = 1 - cos(2 pi / k): nothing of a zigzag (k = 2) stays, and nearly all
+// of a wave many spacings long. The nodes at a fork point stay there: the step out would
+// push them past it.
 std::vector<Point> courseOf(const std::vector<Point>& forks, const std::vector<int>& nodes) {
     std::vector<Point> course;
     for (int n : nodes) course.push_back(forks[std::size_t(n)]);
+    const std::size_t end = course.size() - 1;
+    std::size_t from = 0, to = end;  // the last node at the base's fork point, the first at the tip's
+    if (course.size() > 2) {
+        from = gatherBehindStart(course, end);
+        std::reverse(course.begin(), course.end());
+        to = end - gatherBehindStart(course, end - from);
+        std::reverse(course.begin(), course.end());
+    }
     for (int round = 0; round < 2; ++round) {
         for (double step : {0.5, -0.53}) {
             std::vector<Point> moved = course;
-            for (std::size_t i = 1; i + 1 < course.size(); ++i) {
+            for (std::size_t i = from + 1; i < to; ++i) {
                 moved[i] = course[i] + step * (0.5 * (course[i - 1] + course[i + 1]) - course[i]);
             }
             course = std::move(moved);
