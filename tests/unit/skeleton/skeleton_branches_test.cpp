@@ -151,6 +151,26 @@ TEST(SkeletonBranches, NodesBetweenTheForkAndTheJunctionsNodeAddNoLength) {
     EXPECT_NEAR(branchEndingAt(b, shortTip).length, 0.4 * std::sqrt(2.0), 0.005);
 }
 
+TEST(SkeletonBranches, ALoopBackToAJunctionIsMeasuredAllRound) {
+    // A lasso from the stem's top: one bone 0.5 out, then ten bones back above it, each node
+    // nearer to the top than the one before. Thin (radius 0.01), so that no arm has nodes
+    // near enough for a line: the fork point is the junction's node, no node lies behind it,
+    // and the loop is measured all round (its corners a little rounded).
+    const double radius = 0.01;
+    SkeletonGraph g = singleNode(Point::Zero(), radius);
+    const int top = addChain(g, 0, Point(0, 0, 1), 10, radius);
+    const int out = addChain(g, top, Point(0.5, 0, 1), 1, radius);
+    const int back = addChain(g, out, Point(0.05, 0, 1.1), 10, radius);
+    g.edges.push_back({top, back});
+    normalizeEdges(g.edges);
+    const double perimeter = 0.5 + std::hypot(0.45, 0.1) + std::hypot(0.05, 0.1);
+    const SkeletonBranches b = measureBranches(g);
+    ASSERT_EQ(b.branches.size(), 2u);
+    EXPECT_NEAR(b.branches[0].length, 1.0, 1e-9);
+    EXPECT_TRUE(b.branches[1].closesLoop);
+    EXPECT_NEAR(b.branches[1].length, perimeter, 0.03 * perimeter);
+}
+
 TEST(SkeletonBranches, WhereTheArmsLinesMeetOutsideEveryTubeTheJunctionsNodeIsTaken) {
     // A tuning fork (radius 0.05): two prongs rise from 0.04 either side of the stem's top,
     // leaning in, so that their lines and the stem's meet at (0, 0, 3), far outside the

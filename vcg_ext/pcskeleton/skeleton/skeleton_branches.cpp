@@ -187,15 +187,17 @@ JunctionGroups groupJunctions(const SkeletonGraph& skeleton, const std::vector<s
     return groups;
 }
 
-// Moves the nodes at the front of `course` that lie behind its first point onto it: while
-// the next node lies nearer to that point than a node does, the node is not on the way from
-// there along the branch. A junction's fork point lies back along the arms from its node,
-// in the arms' overlap, and the nodes there would take the course out past the fork and
-// back. Moves none from `last` on; returns the index of the last node at the first point.
-std::size_t gatherBehindStart(std::vector<Point>& course, std::size_t last) {
+// Moves the nodes at the front of `course` that lie behind its first point, a fork point
+// `behind` away from its junction's node, onto it: those nearer to the fork point than the
+// node is, while the next node lies nearer still (they are not on the way from there along
+// the branch). Contraction leaves a junction's node beyond the fork, in the arms' overlap,
+// and the nodes there would take the course out past the fork and back. Moves none from
+// `last` on; returns the index of the last node at the first point.
+std::size_t gatherBehindStart(std::vector<Point>& course, double behind, std::size_t last) {
     const Point start = course.front();
+    const auto distance = [&](std::size_t i) { return (course[i] - start).norm(); };
     std::size_t i = 1;
-    for (; i < last && (course[i + 1] - start).norm() < (course[i] - start).norm(); ++i) course[i] = start;
+    for (; i < last && distance(i) < behind && distance(i + 1) < distance(i); ++i) course[i] = start;
     return i - 1;
 }
 
@@ -207,15 +209,17 @@ std::size_t gatherBehindStart(std::vector<Point>& course, std::size_t last) {
 // itself per round, c = 1 - cos(2 pi / k): nothing of a zigzag (k = 2) stays, and nearly all
 // of a wave many spacings long. The nodes at a fork point stay there: the step out would
 // push them past it.
-std::vector<Point> courseOf(const std::vector<Point>& forks, const std::vector<int>& nodes) {
+std::vector<Point> courseOf(const SkeletonGraph& skeleton, const std::vector<Point>& forks, const std::vector<int>& nodes) {
     std::vector<Point> course;
     for (int n : nodes) course.push_back(forks[std::size_t(n)]);
+    const auto behind = [&](int n) { return (skeleton.nodes[std::size_t(n)] - forks[std::size_t(n)]).norm(); };
     const std::size_t end = course.size() - 1;
     std::size_t from = 0, to = end;  // the last node at the base's fork point, the first at the tip's
+    // Each end takes nodes from its own half only: a loop's course ends where it starts.
     if (course.size() > 2) {
-        from = gatherBehindStart(course, end);
+        from = gatherBehindStart(course, behind(nodes.front()), end / 2);
         std::reverse(course.begin(), course.end());
-        to = end - gatherBehindStart(course, end - from);
+        to = end - gatherBehindStart(course, behind(nodes.back()), end - end / 2);
         std::reverse(course.begin(), course.end());
     }
     for (int round = 0; round < 2; ++round) {
@@ -378,7 +382,7 @@ SkeletonBranches measureBranchesOf(const SkeletonGraph& skeleton, const PointLis
                     continue;
                 }
                 branch.closesLoop = reached[branch.nodes.back()];
-                courses.push_back(courseOf(forks, branch.nodes));
+                courses.push_back(courseOf(skeleton, forks, branch.nodes));
                 const std::vector<Point>& course = courses.back();
                 const std::vector<double> bones = boneLengths(course);
                 measureShape(branchRadii(skeleton, groups, branch.nodes), course, bones, branch);
