@@ -256,6 +256,32 @@ TEST(SkeletonBranches, JunctionsWhoseSpheresOverlapAreOneKnotAndTheirArmsLeaveIt
     EXPECT_EQ(b.nodeBranch[std::size_t(upper)], 0);  // the knot belongs to the stem
 }
 
+TEST(SkeletonBranches, AHandleBetweenTheJunctionsOfAKnotIsALoopWithItsLength) {
+    // Two junctions 0.1 apart (radius 0.1: one knot), joined by a bone and by a handle 1.1
+    // long (0.5 up, 0.1 across, 0.5 down); a stem below the first, an arm to the right of
+    // the second. The bone is inside the knot; the handle is a loop of the skeleton and is
+    // measured as one, not taken into the knot.
+    SkeletonGraph g = singleNode(Point::Zero());
+    const int a = addChain(g, 0, Point(0, 0, 1), 10);
+    const int b = addChain(g, a, Point(0.1, 0, 1), 1);
+    addChain(g, b, Point(1, 0, 1), 9);
+    const int up = addChain(g, a, Point(0, 0, 1.5), 5);
+    const int across = addChain(g, up, Point(0.1, 0, 1.5), 1);
+    const int down = addChain(g, across, Point(0.1, 0, 1.1), 4);
+    g.edges.push_back({down, b});
+    normalizeEdges(g.edges);
+    const SkeletonBranches branches = measureBranches(g);
+    int loops = 0;
+    for (const Branch& branch : branches.branches) {
+        EXPECT_GT(branch.length, 0.5);
+        if (!branch.closesLoop) continue;
+        ++loops;
+        EXPECT_NEAR(branch.length, 1.1, 0.1);
+    }
+    EXPECT_EQ(loops, 1);
+    EXPECT_EQ(branches.branches.size(), 3u);  // the stem, the arm and the handle
+}
+
 TEST(SkeletonBranches, AKnotWhoseForkLiesBetweenItsJunctionsIsMeasuredFromTheFork) {
     // Four arms of length 1 along +-x and +-z meet at the origin, but contraction split the
     // junction into two nodes 0.099 from it, beyond their radius (0.09), joined through a

@@ -40,16 +40,18 @@ double angleDegrees(const Point& a, const Point& b) {
 
 // Junctions joined by a chain of bones whose fork points lie closer than their two radii
 // together (their spheres overlap) are one junction, their arms leaving one knot:
-// contraction splits a junction of four or more arms into two or three such. `group`
-// gives each node of a group (its junctions and the nodes of its inner bones) the group's
-// number, -1 to every other node.
+// contraction splits a junction of four or more arms into two or three such. The chains
+// that join a knot's junctions, its inner bones, are a tree: where junctions are joined
+// already (by shorter chains), a further chain between them is a loop of the skeleton, a
+// handle or a hole, and stays a branch. `group` gives each node of a group (its junctions
+// and the nodes of its inner bones) the group's number, -1 to every other node.
 struct JunctionGroups {
     std::vector<int> group;             // per node
     std::vector<std::vector<int>> junctions;  // per group
+    std::set<Edge> innerBones;          // the first and last bone of each inner chain
 
     bool isInnerBone(const std::vector<int>& chain) const {
-        const int a = group[std::size_t(chain.front())], b = group[std::size_t(chain.back())];
-        return a >= 0 && a == b && chain.front() != chain.back() && group[std::size_t(chain[chain.size() / 2])] == a;
+        return chain.size() >= 2 && innerBones.count(Edge{std::min(chain[0], chain[1]), std::max(chain[0], chain[1])}) > 0;
     }
 };
 
@@ -161,20 +163,39 @@ JunctionGroups groupJunctions(const SkeletonGraph& skeleton, const std::vector<s
     for (std::size_t a = 0; a < count; ++a) {
         if (neighbours[a].size() >= 3) fork[a] = forkPoint(skeleton, neighbours, none, {int(a)});
     }
-    DisjointSets knots(count);
+    // Each chain that could join two junctions into a knot, shortest first (each found from
+    // both its ends, taken once).
+    struct Candidate {
+        double length;
+        std::vector<int> chain;
+    };
+    std::vector<Candidate> candidates;
     std::vector<bool> inKnot(count, false);
     for (std::size_t a = 0; a < count; ++a) {
         if (neighbours[a].size() < 3) continue;
         inKnot[a] = true;
         for (int next : neighbours[a]) {
-            const std::vector<int> chain = walkChain(neighbours, int(a), next);
+            std::vector<int> chain = walkChain(neighbours, int(a), next);
             const std::size_t b = std::size_t(chain.back());
             if (b == a || neighbours[b].size() < 3) continue;
+            if (chain[1] > chain[chain.size() - 2] || (chain[1] == chain[chain.size() - 2] && b < a)) continue;
             if ((fork[a] - fork[b]).norm() >= skeleton.radii[a] + skeleton.radii[b]) continue;
-            for (int n : chain) knots.unite(int(a), n), inKnot[std::size_t(n)] = true;
+            double length = 0.0;
+            for (std::size_t i = 1; i < chain.size(); ++i) length += (skeleton.nodes[std::size_t(chain[i])] - skeleton.nodes[std::size_t(chain[i - 1])]).norm();
+            candidates.push_back({length, std::move(chain)});
         }
     }
+    std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) { return x.length < y.length; });
+    DisjointSets knots(count);
     JunctionGroups groups;
+    for (const Candidate& candidate : candidates) {
+        const std::vector<int>& chain = candidate.chain;
+        if (knots.find(chain.front()) == knots.find(chain.back())) continue;  // a loop: a branch
+        for (int n : chain) knots.unite(chain.front(), n), inKnot[std::size_t(n)] = true;
+        for (std::size_t end : {std::size_t(1), chain.size() - 1}) {
+            groups.innerBones.insert(Edge{std::min(chain[end - 1], chain[end]), std::max(chain[end - 1], chain[end])});
+        }
+    }
     groups.group.assign(count, -1);
     std::vector<int> numberOf(count, -1);
     for (std::size_t n = 0; n < count; ++n) {
@@ -350,13 +371,22 @@ SkeletonBranches measureBranchesOf(const SkeletonGraph& skeleton, const PointLis
     result.nodeBranch.assign(count, -1);
     std::vector<double> nodePosition(count, 0.0);  // along the node's branch, input units
     std::vector<bool> reached(count, false);
+    // A knot of junctions is one place: reaching one of its junctions reaches them all, and a
+    // branch that comes back to any of them closes a loop.
+    const auto reach = [&](int n) {
+        reached[std::size_t(n)] = true;
+        const int knot = groups.group[std::size_t(n)];
+        if (knot >= 0) {
+            for (int junction : groups.junctions[std::size_t(knot)]) reached[std::size_t(junction)] = true;
+        }
+    };
     std::set<Edge> walked;
     const auto walk = [&](int a, int b) { return walked.insert(Edge{std::min(a, b), std::max(a, b)}).second; };
 
     int part = 0;
     for (int root : partRoots(skeleton, options.up, options.root)) {
         if (neighbours[root].empty()) continue;  // an isolated node has no branch
-        reached[root] = true;
+        reach(root);
         const std::size_t first = branches.size();
         std::deque<std::pair<int, int>> junctions{{root, -1}};  // (node, the branch reaching it)
         while (!junctions.empty()) {
@@ -370,12 +400,13 @@ SkeletonBranches measureBranchesOf(const SkeletonGraph& skeleton, const PointLis
                 branch.part = part;
                 branch.nodes = walkChain(neighbours, base, next);
                 for (std::size_t i = 2; i < branch.nodes.size(); ++i) walk(branch.nodes[i - 1], branch.nodes[i]);
-                if (groups.isInnerBone(branch.nodes) && !reached[branch.nodes.back()]) {
+                if (groups.isInnerBone(branch.nodes)) {
                     // Inside one knot of junctions: no branch; the arms of its far junction
-                    // leave the knot as those of this one do, from the same parent.
+                    // leave the knot as those of this one do, from the same parent (also when
+                    // a loop reached that junction first: its arms are walked from here).
                     for (std::size_t i = 1; i < branch.nodes.size(); ++i) {
                         const int n = branch.nodes[i];
-                        reached[n] = true;
+                        reach(n);
                         if (parent >= 0 && result.nodeBranch[n] < 0) result.nodeBranch[n] = parent, nodePosition[n] = branches[parent].length;
                     }
                     junctions.push_front({branch.nodes.back(), parent});
@@ -391,7 +422,7 @@ SkeletonBranches measureBranchesOf(const SkeletonGraph& skeleton, const PointLis
                 const int index = int(branches.size());
                 for (std::size_t i = 1; i < branch.nodes.size(); ++i) {
                     const int n = branch.nodes[i];
-                    reached[n] = true;
+                    reach(n);
                     if (result.nodeBranch[n] < 0) result.nodeBranch[n] = index, nodePosition[n] = branch.along[i];
                 }
                 if (!branch.closesLoop && neighbours[branch.nodes.back()].size() >= 3) {
