@@ -282,6 +282,22 @@ TEST(SkeletonBranches, AHandleBetweenTheJunctionsOfAKnotIsALoopWithItsLength) {
     EXPECT_EQ(branches.branches.size(), 3u);  // the stem, the arm and the handle
 }
 
+TEST(SkeletonBranches, ARootInsideAKnotLeavesNoFalseLoop) {
+    // Two junctions 0.3 apart, joined by a chain that dips below them, each with two arms;
+    // radius 1, so that they are one knot (no arm is long enough for a line: the fork points
+    // are the nodes). The part's root, its lowest node, lies on the knot's inner chain: the
+    // walk starts inside the knot, and neither half of that chain is a branch or a loop.
+    const double radius = 1.0;
+    SkeletonGraph g = singleNode(Point(0, 0, 1), radius);
+    const int dip = addChain(g, 0, Point(0.1, 0, 0.9), 1, radius);
+    const int b = addChain(g, addChain(g, dip, Point(0.2, 0, 0.9), 1, radius), Point(0.3, 0, 1), 1, radius);
+    for (const Point& end : {Point(-0.3, 0, 1.2), Point(-0.3, 0, 1.0)}) addChain(g, 0, end, 1, radius);
+    for (const Point& end : {Point(0.6, 0, 1.2), Point(0.6, 0, 1.0)}) addChain(g, b, end, 1, radius);
+    const SkeletonBranches branches = measureBranches(g);
+    EXPECT_EQ(branches.branches.size(), 4u);
+    for (const Branch& branch : branches.branches) EXPECT_FALSE(branch.closesLoop);
+}
+
 TEST(SkeletonBranches, AKnotWhoseForkLiesBetweenItsJunctionsIsMeasuredFromTheFork) {
     // Four arms of length 1 along +-x and +-z meet at the origin, but contraction split the
     // junction into two nodes 0.099 from it, beyond their radius (0.09), joined through a

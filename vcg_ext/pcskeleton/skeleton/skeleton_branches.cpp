@@ -48,7 +48,7 @@ double angleDegrees(const Point& a, const Point& b) {
 struct JunctionGroups {
     std::vector<int> group;             // per node
     std::vector<std::vector<int>> junctions;  // per group
-    std::set<Edge> innerBones;          // the first and last bone of each inner chain
+    std::set<Edge> innerBones;          // every bone of the inner chains
 
     bool isInnerBone(const std::vector<int>& chain) const {
         return chain.size() >= 2 && innerBones.count(Edge{std::min(chain[0], chain[1]), std::max(chain[0], chain[1])}) > 0;
@@ -192,8 +192,8 @@ JunctionGroups groupJunctions(const SkeletonGraph& skeleton, const std::vector<s
         const std::vector<int>& chain = candidate.chain;
         if (knots.find(chain.front()) == knots.find(chain.back())) continue;  // a loop: a branch
         for (int n : chain) knots.unite(chain.front(), n), inKnot[std::size_t(n)] = true;
-        for (std::size_t end : {std::size_t(1), chain.size() - 1}) {
-            groups.innerBones.insert(Edge{std::min(chain[end - 1], chain[end]), std::max(chain[end - 1], chain[end])});
+        for (std::size_t i = 1; i < chain.size(); ++i) {
+            groups.innerBones.insert(Edge{std::min(chain[i - 1], chain[i]), std::max(chain[i - 1], chain[i])});
         }
     }
     groups.group.assign(count, -1);
