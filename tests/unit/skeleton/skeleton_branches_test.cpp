@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <tuple>
 
 using namespace pcskeleton;
@@ -394,6 +395,40 @@ TEST(SkeletonBranches, PartsGrowFromTheirOwnRootsAndLoneNodesHaveNoBranch) {
     ASSERT_EQ(b.branches.size(), 2u);
     EXPECT_EQ(b.branches[1].nodes.front(), int(g.nodeCount()) - 1) << "its lowest node";
     EXPECT_EQ(b.nodeBranch[6], -1);
+}
+
+TEST(SkeletonBranches, OnRandomGraphsEachCycleIsOneLoopBranchAndEveryBoneIsMeasuredOnce) {
+    // Graphs of 2 to 40 nodes with random bones, at scales from 1e-6 to 100 against radii
+    // from 0.01 to 10 (tiny scales make every pair of junctions one knot), some with nodes
+    // on top of each other: whatever the knots and roots, the loop branches are as many as
+    // the skeleton's independent cycles, no bone is in two branches, and every length is
+    // finite.
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::normal_distribution<double> gaussian;
+    for (int trial = 0; trial < 500; ++trial) {
+        SkeletonGraph g;
+        const int n = 2 + int(unit(random) * 38);
+        const double scale = std::pow(10.0, -6.0 + 8.0 * unit(random)), radius = std::pow(10.0, -2.0 + 3.0 * unit(random));
+        for (int i = 0; i < n; ++i) {
+            g.nodes.push_back(scale * Point(gaussian(random), gaussian(random), gaussian(random)));
+            g.radii.push_back(radius * (0.5 + unit(random)));
+        }
+        if (unit(random) < 0.2) std::fill(g.nodes.begin(), g.nodes.begin() + n / 2, g.nodes.front());
+        const int bones = int(unit(random) * 2 * n);
+        for (int e = 0; e < bones; ++e) g.edges.push_back({int(unit(random) * n), int(unit(random) * n)});
+        normalizeEdges(g.edges);
+        const SkeletonBranches b = measureBranches(g);
+        int loops = 0;
+        std::size_t branchBones = 0;
+        for (const Branch& branch : b.branches) {
+            loops += branch.closesLoop;
+            branchBones += branch.nodes.size() - 1;
+            EXPECT_TRUE(std::isfinite(branch.length) && branch.length >= 0.0) << "trial " << trial;
+        }
+        EXPECT_EQ(loops, analyseTopology(g).cycles) << "trial " << trial;
+        EXPECT_LE(branchBones, g.edges.size()) << "trial " << trial;
+    }
 }
 
 TEST(SkeletonBranches, AZeroUpAxisOrARootThatIsNoNodeIsRefused) {
