@@ -38,6 +38,9 @@ double angleDegrees(const Point& a, const Point& b) {
     return std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0)) * 180.0 / M_PI;
 }
 
+// The bone between nodes a and b as the edge lists hold it (its lower-numbered end first).
+Edge boneBetween(int a, int b) { return Edge{std::min(a, b), std::max(a, b)}; }
+
 // Junctions joined by a chain of bones whose fork points lie closer than their two radii
 // together (their spheres overlap) are one junction, their arms leaving one knot:
 // contraction splits a junction of four or more arms into two or three such. The chains
@@ -51,7 +54,7 @@ struct JunctionGroups {
     std::set<Edge> innerBones;          // every bone of the inner chains
 
     bool isInnerBone(const std::vector<int>& chain) const {
-        return chain.size() >= 2 && innerBones.count(Edge{std::min(chain[0], chain[1]), std::max(chain[0], chain[1])}) > 0;
+        return chain.size() >= 2 && innerBones.count(boneBetween(chain[0], chain[1])) > 0;
     }
 };
 
@@ -163,8 +166,8 @@ JunctionGroups groupJunctions(const SkeletonGraph& skeleton, const std::vector<s
     for (std::size_t a = 0; a < count; ++a) {
         if (neighbours[a].size() >= 3) fork[a] = forkPoint(skeleton, neighbours, none, {int(a)});
     }
-    // Each chain that could join two junctions into a knot, shortest first (each found from
-    // both its ends, taken once).
+    // Each chain that could join two junctions into a knot, shortest first. Each is found
+    // from both its ends; the second time, its junctions are joined already.
     struct Candidate {
         double length;
         std::vector<int> chain;
@@ -178,10 +181,8 @@ JunctionGroups groupJunctions(const SkeletonGraph& skeleton, const std::vector<s
             std::vector<int> chain = walkChain(neighbours, int(a), next);
             const std::size_t b = std::size_t(chain.back());
             if (b == a || neighbours[b].size() < 3) continue;
-            if (chain[1] > chain[chain.size() - 2] || (chain[1] == chain[chain.size() - 2] && b < a)) continue;
             if ((fork[a] - fork[b]).norm() >= skeleton.radii[a] + skeleton.radii[b]) continue;
-            double length = 0.0;
-            for (std::size_t i = 1; i < chain.size(); ++i) length += (skeleton.nodes[std::size_t(chain[i])] - skeleton.nodes[std::size_t(chain[i - 1])]).norm();
+            const double length = pathLength(skeleton, chain);
             candidates.push_back({length, std::move(chain)});
         }
     }
@@ -192,9 +193,7 @@ JunctionGroups groupJunctions(const SkeletonGraph& skeleton, const std::vector<s
         const std::vector<int>& chain = candidate.chain;
         if (knots.find(chain.front()) == knots.find(chain.back())) continue;  // a loop: a branch
         for (int n : chain) knots.unite(chain.front(), n), inKnot[std::size_t(n)] = true;
-        for (std::size_t i = 1; i < chain.size(); ++i) {
-            groups.innerBones.insert(Edge{std::min(chain[i - 1], chain[i]), std::max(chain[i - 1], chain[i])});
-        }
+        for (std::size_t i = 1; i < chain.size(); ++i) groups.innerBones.insert(boneBetween(chain[i - 1], chain[i]));
     }
     groups.group.assign(count, -1);
     std::vector<int> numberOf(count, -1);
@@ -381,7 +380,7 @@ SkeletonBranches measureBranchesOf(const SkeletonGraph& skeleton, const PointLis
         }
     };
     std::set<Edge> walked;
-    const auto walk = [&](int a, int b) { return walked.insert(Edge{std::min(a, b), std::max(a, b)}).second; };
+    const auto walk = [&](int a, int b) { return walked.insert(boneBetween(a, b)).second; };
 
     int part = 0;
     for (int root : partRoots(skeleton, options.up, options.root)) {
