@@ -185,6 +185,35 @@ TEST(CurveSkeleton, TwoStagesEqualOneCall) {
     EXPECT_EQ(fromContracted.pointNode, oneCall.skeleton.pointNode);
 }
 
+// Trying thinning's parameters on one contraction gives what a whole run with them gives,
+// through the subsample too, and leaves the pipeline's own parameters as they were.
+TEST(CurveSkeleton, OneContractionThinnedWithOtherParametersEqualsAWholeRunWithThem) {
+    const PointList cloud = shapes::tube(yShape(1.0), 0.12, 4000);
+    SkeletonParameters parameters;
+    parameters.resolution.maxContractedPoints = 2500;
+    SkeletonPipeline pipeline(cloud, parameters);
+    pipeline.contraction().iterateToEnd({});
+    const SkeletonResult first = pipeline.skeleton();
+
+    SkeletonParameters coarse = parameters;
+    coarse.graph.nodeSpacing = 0.06;
+    coarse.graph.refine = false;
+    const SkeletonResult tried = pipeline.skeleton(coarse.graph);
+    const SkeletonResult wholeRun = computeCurveSkeleton(cloud, coarse);
+    EXPECT_EQ(tried.skeleton.nodes, wholeRun.skeleton.nodes);
+    EXPECT_EQ(tried.skeleton.edges, wholeRun.skeleton.edges);
+    EXPECT_EQ(tried.skeleton.pointNode, wholeRun.skeleton.pointNode);
+    EXPECT_LT(tried.skeleton.nodeCount(), first.skeleton.nodeCount());
+
+    const SkeletonResult again = pipeline.skeleton();
+    EXPECT_EQ(again.skeleton.nodes, first.skeleton.nodes);
+    EXPECT_EQ(again.skeleton.edges, first.skeleton.edges);
+
+    SkeletonGraphParameters unusable = parameters.graph;
+    unusable.gapLimit = -1;
+    EXPECT_THROW(pipeline.skeleton(unusable), InvalidInput);
+}
+
 TEST(CurveSkeleton, ScaleDoesNotChangeTheGraph) {
     const PointList cloud = shapes::tube(yShape(1.0), 0.12, 4000);
     PointList scaled;

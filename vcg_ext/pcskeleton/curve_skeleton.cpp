@@ -243,7 +243,12 @@ SkeletonPipeline::SkeletonPipeline(const PointList& input, const SkeletonParamet
       contraction_(input_.points(), parameters.contraction, progressRange(progress, 40, 100)) {}
 
 SkeletonResult SkeletonPipeline::skeleton(const ProgressCallback& progress) const {
-    SkeletonResult result = skeletonFromContraction(contraction_, parameters_.graph, progress);
+    return skeleton(parameters_.graph, progress);
+}
+
+SkeletonResult SkeletonPipeline::skeleton(const SkeletonGraphParameters& graph, const ProgressCallback& progress) const {
+    checkSkeletonGraphParameters(graph);
+    SkeletonResult result = skeletonFromContraction(contraction_, graph, progress);
     input_.carryToAllPoints(result);
     return result;
 }

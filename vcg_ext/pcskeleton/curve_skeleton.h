@@ -174,6 +174,10 @@ public:
     // Steps 4-5 and what follows them on the contraction's current state, carried to every
     // input point.
     SkeletonResult skeleton(const ProgressCallback& progress = {}) const;
+    // The same with other thinning parameters than the pipeline's: trying node spacings or
+    // refinement on one contraction costs only these steps. Throws InvalidInput for
+    // parameters thinning cannot use.
+    SkeletonResult skeleton(const SkeletonGraphParameters& graph, const ProgressCallback& progress = {}) const;
 
 private:
     SkeletonParameters parameters_;
