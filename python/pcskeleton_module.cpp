@@ -140,25 +140,42 @@ double keywordValue(const ParameterInfo& p, py::handle value, const char* functi
     return 0;
 }
 
-// The settings `kwargs` give: `paper=True` first (the paper's pipeline), then every other
-// keyword, as the CLI's --paper and its options. None means "the default". Unknown keywords,
-// and keywords of the other computation's stage, are a TypeError.
-Settings settingsFrom(const py::dict& kwargs, bool reconstruction, const char* function) {
-    bool paper = false;
+py::type_error unexpectedKeyword(const char* function, const std::string& name) {
+    return py::type_error(std::string(function) + "() got an unexpected keyword argument '" + name + "'");
+}
+
+// The parameter values of `kwargs`, None meaning "the default" (left out). `accepts(name,
+// parameter, value)` sees each keyword first (`parameter` is nullptr for a name that is no
+// parameter's): it throws for a keyword the call does not take, and returns false for one it
+// has used itself.
+template <class Accepts>
+std::vector<std::pair<Parameter, double>> parameterValues(const py::dict& kwargs, const char* function,
+                                                          const Accepts& accepts) {
     std::vector<std::pair<Parameter, double>> given;
     for (const auto& [key, value] : kwargs) {
-        const std::string name = key.cast<std::string>();
+        const std::string name = py::cast<std::string>(key);
+        const ParameterInfo* p = parameterNamed(name);
+        if (!accepts(name, p, value) || value.is_none()) continue;
+        given.emplace_back(p->id, keywordValue(*p, value, function));
+    }
+    return given;
+}
+
+// The settings `kwargs` give: `paper=True` first (the paper's pipeline), then every other
+// keyword, as the CLI's --paper and its options. Unknown keywords, and keywords of the other
+// computation's stage, are a TypeError.
+Settings settingsFrom(const py::dict& kwargs, bool reconstruction, const char* function) {
+    bool paper = false;
+    const auto given = parameterValues(kwargs, function, [&](const std::string& name, const ParameterInfo* p,
+                                                             py::handle value) {
         if (name == "paper") {
             if (!py::isinstance<py::bool_>(value)) throw py::type_error(std::string(function) + "(): paper must be of type bool");
             paper = value.cast<bool>();
-            continue;
+            return false;
         }
-        const ParameterInfo* p = parameterNamed(name);
-        if (!p || (p->stage == Stage::Reconstruction) != reconstruction)
-            throw py::type_error(std::string(function) + "() got an unexpected keyword argument '" + name + "'");
-        if (value.is_none()) continue;
-        given.emplace_back(p->id, keywordValue(*p, value, function));
-    }
+        if (!p || (p->stage == Stage::Reconstruction) != reconstruction) throw unexpectedKeyword(function, name);
+        return true;
+    });
     return pcskeleton::settingsFrom(paper, given);
 }
 
@@ -598,14 +615,31 @@ public:
         return arrayOwning(exclusively([&] { return pipeline_->input().points(); }));
     }
 
-    PySkeleton skeleton(const py::object& progress) const {
+    // Thinning with the Contraction's parameters, those of `kwargs` (thinning's only) replacing them.
+    PySkeleton skeleton(const py::object& progress, const py::dict& kwargs) const {
+        const SkeletonGraphParameters graph = thinningSettingsFrom(kwargs).skeleton.graph;
         return skeletonFrom(withoutGil(progress, [&](const ProgressCallback& callback) {
             const std::lock_guard<std::mutex> lock(mutex_);
-            return pipeline_->skeleton(callback);
+            return pipeline_->skeleton(graph, callback);
         }));
     }
 
 private:
+    // The Contraction's settings with thinning's keywords of `kwargs` instead of its own.
+    Settings thinningSettingsFrom(const py::dict& kwargs) const {
+        constexpr const char* function = "skeleton_from_contraction";
+        const auto given = parameterValues(kwargs, function, [&](const std::string& name, const ParameterInfo* p,
+                                                                 py::handle) {
+            if (name == "paper" || (p && p->stage != Stage::Thinning && p->stage != Stage::Reconstruction)) {
+                throw py::type_error(std::string(function) + "(): '" + name +
+                                     "' changes the contraction: give it to Contraction() instead");
+            }
+            if (!p || p->stage != Stage::Thinning) throw unexpectedKeyword(function, name);
+            return true;
+        });
+        return withParameters(settings_, given);
+    }
+
     PointList points_;  // the pipeline refers to it
     Settings settings_;
     std::unique_ptr<SkeletonPipeline> pipeline_;
@@ -726,7 +760,7 @@ PYBIND11_MODULE(_pcskeleton, m) {
         .def_property_readonly("stop_reason", &PyContraction::stopReason)
         .def_property_readonly("contracted", &PyContraction::contracted)
         .def_property_readonly("points", &PyContraction::workingPoints)
-        .def("_skeleton", &PyContraction::skeleton);
+        .def("_skeleton", &PyContraction::skeleton, py::arg("progress"), py::arg("parameters"));
 
     m.def("_reconstruct", [](const py::object& points, const PySkeleton& skeleton, const py::dict& kwargs,
                              const py::object& progress) {

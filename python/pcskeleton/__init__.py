@@ -111,11 +111,24 @@ class Contraction(_pcskeleton._Contraction):
         super().__init__(_points_of(points), parameters, progress)
 
 
-def skeleton_from_contraction(contraction, *, progress=None):
+def skeleton_from_contraction(contraction, *, progress=None, **parameters):
     """Thinning and embedding (paper steps 4-5) of a Contraction's current state, then the
     steps after them, with the keywords the Contraction was given. Every input point gets
-    its node, also through a subsample."""
-    return contraction._skeleton(progress)
+    its node, also through a subsample.
+
+    Thinning's keywords given here (node_spacing, refine, recentre, gap_limit, ...) replace
+    the Contraction's for this call only, so trying them costs thinning alone, not the
+    contraction again:
+
+        c = Contraction(points)
+        while not c.finished:
+            c.iterate()
+        for spacing in (0.02, 0.03, 0.05):
+            print(spacing, skeleton_from_contraction(c, node_spacing=spacing).topology)
+
+    A keyword that changes the contraction (k, wl, keep_outliers, contracted_points, paper,
+    ...) raises TypeError: give it to a new Contraction."""
+    return contraction._skeleton(progress, parameters)
 
 
 def reconstruct(points, skeleton, *, progress=None, **parameters):

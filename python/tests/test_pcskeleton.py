@@ -275,6 +275,38 @@ def test_contraction_step_by_step_gives_the_one_call_skeleton(torus_points, toru
     assert np.array_equal(s.nodes, torus_skeleton.nodes) and np.array_equal(s.edges, torus_skeleton.edges)
 
 
+def test_thinning_keywords_tried_on_one_contraction_give_the_whole_runs_skeletons(torus_points, torus_skeleton):
+    contraction = pcskeleton.Contraction(torus_points)
+    while not contraction.finished:
+        contraction.iterate()
+    contracted = contraction.contracted.copy()
+    for keywords in ({"node_spacing": 0.06}, {"refine": False, "recentre": False}):
+        tried = pcskeleton.skeleton_from_contraction(contraction, **keywords)
+        whole_run = pcskeleton.skeletonize(torus_points, **keywords)
+        assert np.array_equal(tried.nodes, whole_run.nodes), keywords
+        assert np.array_equal(tried.edges, whole_run.edges), keywords
+        assert np.array_equal(tried.correspondence, whole_run.correspondence), keywords
+    assert len(pcskeleton.skeleton_from_contraction(contraction, node_spacing=0.06).nodes) < len(torus_skeleton.nodes)
+    # The contraction is not run again, and its own keywords are still the ones it was given.
+    assert np.array_equal(contraction.contracted, contracted)
+    again = pcskeleton.skeleton_from_contraction(contraction)
+    assert np.array_equal(again.nodes, torus_skeleton.nodes) and np.array_equal(again.edges, torus_skeleton.edges)
+
+
+def test_a_keyword_that_changes_the_contraction_is_refused_when_thinning_it(torus_points):
+    contraction = pcskeleton.Contraction(torus_points, iterations=1)
+    contraction.iterate()
+    for name, value in (("k", 12), ("keep_outliers", True), ("contracted_points", 5000), ("paper", True)):
+        with pytest.raises(TypeError, match=f"'{name}' changes the contraction: give it to Contraction"):
+            pcskeleton.skeleton_from_contraction(contraction, **{name: value})
+    with pytest.raises(TypeError, match="unexpected keyword argument 'resolution'"):
+        pcskeleton.skeleton_from_contraction(contraction, resolution=64)
+    with pytest.raises(TypeError, match="unexpected keyword argument 'node_spacingg'"):
+        pcskeleton.skeleton_from_contraction(contraction, node_spacingg=0.05)
+    with pytest.raises(ValueError, match="gap_limit"):
+        pcskeleton.skeleton_from_contraction(contraction, gap_limit=-1)
+
+
 def test_threads_sharing_one_contraction_take_turns():
     # Four threads iterating one contraction and reading it meanwhile: once a segfault.
     contraction = pcskeleton.Contraction(shapes.torus(count=3000, seed=9))

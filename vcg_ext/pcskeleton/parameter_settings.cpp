@@ -120,7 +120,10 @@ void setParameter(Settings& settings, Parameter id, double value) {
 }
 
 Settings settingsFrom(bool paper, const std::vector<std::pair<Parameter, double>>& given) {
-    Settings settings = paper ? Settings::paper() : Settings{};
+    return withParameters(paper ? Settings::paper() : Settings{}, given);
+}
+
+Settings withParameters(Settings settings, const std::vector<std::pair<Parameter, double>>& given) {
     // In the table's order, so that the order of the options does not matter (full
     // resolution, after the number of contracted points, wins over it).
     const std::vector<ParameterInfo>& table = parameterTable();

@@ -35,5 +35,7 @@ void setParameter(Settings& settings, Parameter id, double value);
 // pipeline when `paper`, then every given value, whatever order they were given in (a
 // parameter given twice takes its last value). Each value is checked as it is set.
 Settings settingsFrom(bool paper, const std::vector<std::pair<Parameter, double>>& given);
+// The same starting from `settings` instead of the defaults.
+Settings withParameters(Settings settings, const std::vector<std::pair<Parameter, double>>& given);
 
 }  // namespace pcskeleton
