@@ -185,6 +185,23 @@ TEST(CurveSkeleton, TwoStagesEqualOneCall) {
     EXPECT_EQ(fromContracted.pointNode, oneCall.skeleton.pointNode);
 }
 
+// Above the subsample's size too: the contracted points of every input point, thinned again
+// with the run's parameters, give the run's skeleton (thinning the subsample, not all points).
+TEST(CurveSkeleton, ContractedPointsThinnedThroughTheRunsSubsampleGiveItsSkeleton) {
+    const PointList cloud = shapes::tube(yShape(1.0), 0.12, 4000);
+    SkeletonParameters parameters;
+    parameters.resolution.maxContractedPoints = 2500;
+    const SkeletonResult run = computeCurveSkeleton(cloud, parameters);
+    ASSERT_EQ(run.contraction.contracted.size(), cloud.size());
+    const SkeletonResult again = skeletonFromContractedPoints(cloud, run.contraction.contracted, parameters);
+    EXPECT_EQ(again.skeleton.nodes, run.skeleton.nodes);
+    EXPECT_EQ(again.skeleton.edges, run.skeleton.edges);
+    EXPECT_EQ(again.skeleton.pointNode, run.skeleton.pointNode);
+    EXPECT_EQ(again.skeleton.radii, run.skeleton.radii);
+    EXPECT_EQ(again.quality.inputPoints, cloud.size());
+    EXPECT_LE(again.quality.points, parameters.resolution.maxContractedPoints);
+}
+
 // Trying thinning's parameters on one contraction gives what a whole run with them gives,
 // through the subsample too, and leaves the pipeline's own parameters as they were.
 TEST(CurveSkeleton, OneContractionThinnedWithOtherParametersEqualsAWholeRunWithThem) {
@@ -447,10 +464,14 @@ TEST(CurveSkeleton, NarrowLoopLimitsMustBeInRange) {
 
 TEST(CurveSkeleton, ContractedPointsMustMatchTheInput) {
     const PointList cloud = shapes::sphere(500, 1.0);
-    EXPECT_THROW(skeletonFromContractedPoints(cloud, PointList(10, Point::Zero()), {}, {}), InvalidInput);
+    const ContractionParameters contraction;
+    const SkeletonGraphParameters thinning;
+    EXPECT_THROW(skeletonFromContractedPoints(cloud, PointList(10, Point::Zero()), contraction, thinning), InvalidInput);
+    EXPECT_THROW(skeletonFromContractedPoints(cloud, PointList(10, Point::Zero()), SkeletonParameters{}), InvalidInput);
     PointList withNaN = cloud;
     withNaN[3].x() = std::nan("");
-    EXPECT_THROW(skeletonFromContractedPoints(cloud, withNaN, {}, {}), InvalidInput);
+    EXPECT_THROW(skeletonFromContractedPoints(cloud, withNaN, contraction, thinning), InvalidInput);
+    EXPECT_THROW(skeletonFromContractedPoints(cloud, withNaN, SkeletonParameters{}), InvalidInput);
 }
 
 // Multi-resolution: 200K points contracted through a subsample of 20K (the default), with

@@ -260,15 +260,44 @@ SkeletonResult computeCurveSkeleton(const PointList& input, const SkeletonParame
     return pipeline.skeleton(progressRange(progress, 90, 100));
 }
 
+namespace {
+
+void requireOneContractedPointPerInputPoint(const PointList& input, const PointList& contracted) {
+    if (contracted.size() != input.size()) {
+        std::ostringstream message;
+        message << "There are " << contracted.size() << " contracted points for " << input.size()
+                << " input points: the contracted points must be those made from this input, one per point.";
+        throw InvalidInput(message.str(), {Remedy::take(Step::ContractAgain)});
+    }
+}
+
+}  // namespace
+
+SkeletonResult skeletonFromContractedPoints(const PointList& input, const PointList& contracted,
+                                            const SkeletonParameters& parameters, const ProgressCallback& progress) {
+    requireOneContractedPointPerInputPoint(input, contracted);
+    checkContractionParameters(parameters.contraction);
+    checkSkeletonGraphParameters(parameters.graph);
+    checkResolutionParameters(parameters.resolution);
+    const ContractionInput work(input, parameters.resolution, parameters.contraction.outliers,
+                                progressRange(progress, 0, 30));
+    if (!work.subsampled()) {
+        return skeletonFromContractedPoints(input, contracted, parameters.contraction, parameters.graph,
+                                            progressRange(progress, 30, 100));
+    }
+    PointList keptContracted;
+    keptContracted.reserve(work.subsample().kept.size());
+    for (int kept : work.subsample().kept) keptContracted.push_back(contracted[std::size_t(kept)]);
+    SkeletonResult result = skeletonFromContractedPoints(work.points(), keptContracted, parameters.contraction,
+                                                         parameters.graph, progressRange(progress, 30, 100));
+    work.carryToAllPoints(result);
+    return result;
+}
+
 SkeletonResult skeletonFromContractedPoints(const PointList& input, const PointList& contracted,
                                             const ContractionParameters& contraction,
                                             const SkeletonGraphParameters& parameters, const ProgressCallback& progress) {
-    if (contracted.size() != input.size()) {
-        std::ostringstream message;
-        message << "The contracted layer has " << contracted.size() << " points but its input has " << input.size()
-                << ".";
-        throw InvalidInput(message.str(), {Remedy::take(Step::ContractAgain)});
-    }
+    requireOneContractedPointPerInputPoint(input, contracted);
     // The same cloud and 1-rings as the contraction's.
     const ContractionStart start = prepareContraction(input, contraction, progressRange(progress, 0, 50));
     const NormalizedCloud& cloud = start.cloud;

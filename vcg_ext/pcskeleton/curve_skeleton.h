@@ -200,4 +200,12 @@ SkeletonResult skeletonFromContractedPoints(const PointList& input, const PointL
                                             const SkeletonGraphParameters& parameters,
                                             const ProgressCallback& progress = {});
 
+// The same through the subsample computeCurveSkeleton(input, parameters) contracts, when it
+// takes one: thinning the points it kept (each at its own contracted place) and carrying the
+// result to every point, as that run did. With the parameters of the run that made
+// `contracted`, this gives its skeleton, at the cost of thinning the subsample alone.
+SkeletonResult skeletonFromContractedPoints(const PointList& input, const PointList& contracted,
+                                            const SkeletonParameters& parameters,
+                                            const ProgressCallback& progress = {});
+
 }  // namespace pcskeleton
