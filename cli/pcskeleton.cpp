@@ -37,6 +37,7 @@ struct Options {
     std::vector<std::string> inputs;  // as given: files, folders, globs
     std::string input, output, contracted, correspondence, report;
     std::string skeleton;  // a given (edited) skeleton to reconstruct from, instead of computing one
+    std::string fromContracted;  // contracted points written earlier (--contracted): thinning alone
     std::string surface;   // where to write the reconstructed surface
     std::string branches, pointBranches;  // the branch table; each point's branch
     pcskeleton::BranchOptions branchOptions;  // --up, --root
@@ -161,6 +162,13 @@ void printHelp() {
         "                        .ply (binary), .off or .obj\n"
         "  --skeleton FILE       reconstruct from this skeleton (.ply with radii, as -o\n"
         "                        writes it; .obj/.cg have none) instead of computing one\n"
+        "  --from-contracted FILE\n"
+        "                        thin the contracted points that --contracted wrote for\n"
+        "                        this INPUT instead of contracting again: a new node\n"
+        "                        spacing or refinement costs thinning alone. Give that\n"
+        "                        run's --k, outlier and --contracted-points options:\n"
+        "                        the subsample, outliers and 1-rings are found again\n"
+        "                        with them\n"
         "  --branches FILE       also write the branch table: per branch (a chain between\n"
         "                        tips and junctions, grown from each part's lowest node\n"
         "                        along z) its parent, order, length, chord, radii, volume,\n"
@@ -305,7 +313,7 @@ void checkOutputs(const Options& options) {
     for (std::size_t i = 0; i < outputs.size(); ++i) {
         const auto& [option, path] = outputs[i];
         if (path.empty()) continue;
-        for (const std::string& input : {options.input, options.skeleton}) {
+        for (const std::string& input : {options.input, options.skeleton, options.fromContracted}) {
             if (!input.empty() && samePath(path, input)) {
                 throw UsageError(option + " '" + path +
                                  "' is an input file; choose another name (inputs are never overwritten)");
@@ -352,6 +360,9 @@ void checkBatch(Options& options) {
                          "', ...): add -O FOLDER for their outputs");
     }
     if (!options.skeleton.empty()) throw UsageError("--skeleton takes one input: leave out -O and the other inputs");
+    if (!options.fromContracted.empty()) {
+        throw UsageError("--from-contracted takes one input: leave out -O and the other inputs");
+    }
     if (options.output.empty()) options.output = "{stem}_skeleton.ply";
     if (!isSkeletonFileName(options.output)) throw UsageError("the output must end in .ply, .obj or .cg");
     checkOutputNames(options);
@@ -413,6 +424,7 @@ bool parseArguments(int argc, char** argv, Options& options) {
         {"-o", &options.output},           {"--output", &options.output},
         {"--contracted", &options.contracted}, {"--correspondence", &options.correspondence},
         {"--report", &options.report},     {"--skeleton", &options.skeleton},
+        {"--from-contracted", &options.fromContracted},
         {"--surface", &options.surface},   {"--branches", &options.branches},
         {"--point-branches", &options.pointBranches}};
     // The parameter table's options: "--name VALUE", or for a switch "--name" and "--no-name".
@@ -500,6 +512,12 @@ bool parseArguments(int argc, char** argv, Options& options) {
         throw UsageError("--jobs and --summary are for several inputs: add -O FOLDER for their outputs");
     }
     options.input = options.inputs.front();
+    if (!options.fromContracted.empty()) {
+        if (!options.skeleton.empty()) throw UsageError("--skeleton and --from-contracted: give one of them");
+        if (!options.contracted.empty()) {
+            throw UsageError("--contracted with --from-contracted: the contracted points are that file already");
+        }
+    }
     if (!options.skeleton.empty()) {
         if (options.surface.empty() && options.branches.empty()) {
             throw UsageError("--skeleton is for reconstruction or measuring: add --surface FILE or --branches FILE");
@@ -577,7 +595,12 @@ int main(int argc, char** argv) {
         if (!options.skeleton.empty()) {
             result.skeleton = readSkeleton(options.skeleton);
         } else {
-            result = computeCurveSkeleton(points, options.settings.skeleton, progress);
+            if (options.fromContracted.empty()) {
+                result = computeCurveSkeleton(points, options.settings.skeleton, progress);
+            } else {
+                result = skeletonFromContractedPoints(points, readPointCloud(options.fromContracted),
+                                                      options.settings.skeleton, progress);
+            }
             if (showProgress) std::fprintf(stderr, "\r%-46s\r", "");
             writes.emplace_back(options.output, [&] { writeSkeleton(result.skeleton, options.output); });
             if (!options.contracted.empty()) {
@@ -594,13 +617,18 @@ int main(int argc, char** argv) {
             }
             if (!options.quiet) {
                 const StageSeconds& s = result.seconds;
+                const std::string contraction =
+                    options.fromContracted.empty()
+                        ? std::to_string(result.contraction.iterations.size()) + " iterations, " +
+                              describe(result.contraction.stopReason)
+                        : "read from " + options.fromContracted;
                 std::fprintf(stderr,
-                             "pcskeleton: %s: %zu points -> %s; contraction: %zu iterations, %s; "
+                             "pcskeleton: %s: %zu points -> %s; contraction: %s; "
                              "time: subsampling %.2f s, 1-rings %.2f s, contraction %.2f s, thinning %.2f s, embedding %.2f s, "
                              "finishing %.2f s\n%s\n",
                              options.input.c_str(), points.size(), describe(result.quality.topology).c_str(),
-                             result.contraction.iterations.size(), describe(result.contraction.stopReason).c_str(),
-                             s.subsampling, s.neighbourhoods, s.contraction, s.thinning, s.embedding, s.finishing, report.c_str());
+                             contraction.c_str(), s.subsampling, s.neighbourhoods, s.contraction, s.thinning, s.embedding,
+                             s.finishing, report.c_str());
             }
         }
         SkeletonBranches branches;

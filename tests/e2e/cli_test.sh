@@ -142,6 +142,30 @@ grep -q "format binary_little_endian" <<<"$(head -c 200 elephant_contracted.ply 
 [ ! -s quiet.log ] || fail "--quiet still printed: $(cat quiet.log)"
 $GRAPH check contracted_again.obj --min-nodes 2
 
+# Thinning those contracted points again (--from-contracted) gives the whole run's skeleton,
+# with the run's node spacing and with another one; mismatched or conflicting files are refused.
+"$PCSKELETON" $M/elephant.off --from-contracted elephant_contracted.ply -o elephant_again.ply 2>again.log
+grep -q "contraction: read from elephant_contracted.ply" again.log || { cat again.log; fail "no word of the contracted file"; }
+cmp -s elephant.ply elephant_again.ply || fail "--from-contracted gave another skeleton than the run that wrote the file"
+"$PCSKELETON" $M/elephant.off -o elephant_coarse.ply --node-spacing 0.05 --quiet
+"$PCSKELETON" $M/elephant.off --from-contracted elephant_contracted.ply -o elephant_coarse_again.ply --node-spacing 0.05 --quiet
+cmp -s elephant_coarse.ply elephant_coarse_again.ply || fail "--from-contracted --node-spacing 0.05 differs from a whole run with it"
+cmp -s elephant.ply elephant_coarse.ply && fail "--node-spacing 0.05 changed nothing"
+# Through a subsample (as clouds above --contracted-points are): thinning it again, the same.
+"$PCSKELETON" $M/elephant.off -o elephant_sub.ply --contracted elephant_sub_contracted.ply --contracted-points 1000 --quiet
+"$PCSKELETON" $M/elephant.off --from-contracted elephant_sub_contracted.ply -o elephant_sub_again.ply \
+  --contracted-points 1000 --quiet
+cmp -s elephant_sub.ply elephant_sub_again.ply || fail "--from-contracted through a subsample differs from the run"
+"$PCSKELETON" $M/knot.off --from-contracted elephant_contracted.ply -o mismatched.ply 2>mismatched.log \
+  && fail "another input's contracted points were accepted"
+grep -q "2775 contracted points for" mismatched.log || { cat mismatched.log; fail "the refusal does not give the counts"; }
+[ ! -e mismatched.ply ] || fail "a refused --from-contracted wrote mismatched.ply"
+"$PCSKELETON" $M/elephant.off --from-contracted elephant_contracted.ply -o elephant_contracted.ply --force 2>/dev/null \
+  && fail "--from-contracted's file was overwritten by -o"
+"$PCSKELETON" $M/elephant.off --from-contracted elephant_contracted.ply -o x.ply --contracted y.ply 2>/dev/null \
+  && fail "--contracted was accepted with --from-contracted"
+[ ! -e x.ply ] && [ ! -e y.ply ] || fail "a refused --from-contracted wrote x.ply or y.ply"
+
 # The three output formats hold the same graph.
 "$PCSKELETON" $M/knot.off -o knot.obj --quiet
 "$PCSKELETON" $M/knot.off -o knot.cg --quiet
