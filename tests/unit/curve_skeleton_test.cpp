@@ -200,6 +200,15 @@ TEST(CurveSkeleton, ContractedPointsThinnedThroughTheRunsSubsampleGiveItsSkeleto
     EXPECT_EQ(again.skeleton.radii, run.skeleton.radii);
     EXPECT_EQ(again.quality.inputPoints, cloud.size());
     EXPECT_LE(again.quality.points, parameters.resolution.maxContractedPoints);
+
+    // A damaged point is refused also where it is not in the subsample (and so not thinned).
+    const ContractionInput work(cloud, parameters.resolution, parameters.contraction.outliers);
+    const std::vector<int>& kept = work.subsample().kept;
+    std::size_t notKept = 0;
+    while (std::binary_search(kept.begin(), kept.end(), int(notKept))) ++notKept;
+    PointList damaged = run.contraction.contracted;
+    damaged[notKept].x() = std::nan("");
+    EXPECT_THROW(skeletonFromContractedPoints(cloud, damaged, parameters), InvalidInput);
 }
 
 // Trying thinning's parameters on one contraction gives what a whole run with them gives,

@@ -276,6 +276,8 @@ void requireOneContractedPointPerInputPoint(const PointList& input, const PointL
 SkeletonResult skeletonFromContractedPoints(const PointList& input, const PointList& contracted,
                                             const SkeletonParameters& parameters, const ProgressCallback& progress) {
     requireOneContractedPointPerInputPoint(input, contracted);
+    // All of them, though only the subsample's are thinned: a damaged file is refused whole.
+    rejectNonFinite(contracted, "contracted points", Remedy::take(Step::ContractAgain));
     checkContractionParameters(parameters.contraction);
     checkSkeletonGraphParameters(parameters.graph);
     checkResolutionParameters(parameters.resolution);
