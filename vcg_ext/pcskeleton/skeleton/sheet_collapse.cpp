@@ -61,17 +61,19 @@ struct Neighbourhoods {
 
 Neighbourhoods sheetNeighbourhoods(const PointList& points, const PointIndex& index, double radius) {
     Neighbourhoods n{std::vector<char>(points.size(), 0), std::vector<Point>(points.size(), Point::Zero())};
+    const std::vector<std::size_t>& order = index.spatialOrder();  // consecutive queries share the tree's nodes
 #pragma omp parallel
     {
         std::vector<int> found;
 #pragma omp for schedule(static)
-        for (long i = 0; i < long(points.size()); ++i) {
-            index.withinRadius(points[std::size_t(i)], kNeighbourhoodRadii * radius, found);
+        for (long rank = 0; rank < long(points.size()); ++rank) {
+            const std::size_t i = order[std::size_t(rank)];
+            index.withinRadius(points[i], kNeighbourhoodRadii * radius, found);
             if (found.size() < kFewestNeighbours) continue;
             const LocalPlane plane = fitLocalPlane(points, found);
             const Eigen::Vector3d& v = plane.variances;
-            n.sheet[std::size_t(i)] = v(1) >= kSpread * v(2) && v(0) <= kFlat * v(1);
-            n.normal[std::size_t(i)] = plane.axes.col(0);
+            n.sheet[i] = v(1) >= kSpread * v(2) && v(0) <= kFlat * v(1);
+            n.normal[i] = plane.axes.col(0);
         }
     }
     return n;
