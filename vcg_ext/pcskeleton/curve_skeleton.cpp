@@ -276,8 +276,6 @@ void requireOneContractedPointPerInputPoint(const PointList& input, const PointL
 SkeletonResult skeletonFromContractedPoints(const PointList& input, const PointList& contracted,
                                             const SkeletonParameters& parameters, const ProgressCallback& progress) {
     requireOneContractedPointPerInputPoint(input, contracted);
-    // All of them, though only the subsample's are thinned: a damaged file is refused whole.
-    rejectNonFinite(contracted, "contracted points", Remedy::take(Step::ContractAgain));
     checkContractionParameters(parameters.contraction);
     checkSkeletonGraphParameters(parameters.graph);
     checkResolutionParameters(parameters.resolution);
@@ -287,6 +285,9 @@ SkeletonResult skeletonFromContractedPoints(const PointList& input, const PointL
         return skeletonFromContractedPoints(input, contracted, parameters.contraction, parameters.graph,
                                             progressRange(progress, 30, 100));
     }
+    // Thinning checks the subsample's points; the others are checked here, so that a damaged
+    // file is refused whole rather than half read.
+    rejectNonFinite(contracted, "contracted points", Remedy::take(Step::ContractAgain));
     PointList keptContracted;
     keptContracted.reserve(work.subsample().kept.size());
     for (int kept : work.subsample().kept) keptContracted.push_back(contracted[std::size_t(kept)]);
