@@ -129,7 +129,7 @@ void SkeletonEditor::deleteEdge(int a, int b) {
     State next = current_;
     next.what = "delete an edge";
     auto& edges = next.graph.edges;
-    edges.erase(std::find(edges.begin(), edges.end(), Edge{std::min(a, b), std::max(a, b)}));
+    edges.erase(std::find(edges.begin(), edges.end(), edgeBetween(a, b)));
     commit(std::move(next));
 }
 
@@ -194,7 +194,7 @@ int SkeletonEditor::splitEdge(int a, int b, double at) {
     const int inserted = static_cast<int>(g.nodeCount());
     g.nodes.push_back((1.0 - at) * g.nodes[a] + at * g.nodes[b]);
     g.radii.push_back((1.0 - at) * g.radii[a] + at * g.radii[b]);
-    const Edge split{std::min(a, b), std::max(a, b)};
+    const Edge split = edgeBetween(a, b);
     g.edges.erase(std::find(g.edges.begin(), g.edges.end(), split));
     g.edges.push_back({a, inserted});
     g.edges.push_back({b, inserted});

@@ -38,9 +38,6 @@ double angleDegrees(const Point& a, const Point& b) {
     return std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0)) * 180.0 / M_PI;
 }
 
-// The bone between nodes a and b as the edge lists hold it (its lower-numbered end first).
-Edge boneBetween(int a, int b) { return Edge{std::min(a, b), std::max(a, b)}; }
-
 // Junctions joined by a chain of bones whose fork points lie closer than their two radii
 // together (their spheres overlap) are one junction, their arms leaving one knot:
 // contraction splits a junction of four or more arms into two or three such. The chains
@@ -54,7 +51,7 @@ struct JunctionGroups {
     std::set<Edge> innerBones;          // every bone of the inner chains
 
     bool isInnerBone(const std::vector<int>& chain) const {
-        return chain.size() >= 2 && innerBones.count(boneBetween(chain[0], chain[1])) > 0;
+        return chain.size() >= 2 && innerBones.count(edgeBetween(chain[0], chain[1])) > 0;
     }
 };
 
@@ -193,7 +190,7 @@ JunctionGroups groupJunctions(const SkeletonGraph& skeleton, const std::vector<s
         const std::vector<int>& chain = candidate.chain;
         if (knots.find(chain.front()) == knots.find(chain.back())) continue;  // a loop: a branch
         for (int n : chain) knots.unite(chain.front(), n), inKnot[std::size_t(n)] = true;
-        for (std::size_t i = 1; i < chain.size(); ++i) groups.innerBones.insert(boneBetween(chain[i - 1], chain[i]));
+        for (std::size_t i = 1; i < chain.size(); ++i) groups.innerBones.insert(edgeBetween(chain[i - 1], chain[i]));
     }
     groups.group.assign(count, -1);
     std::vector<int> numberOf(count, -1);
@@ -380,7 +377,7 @@ SkeletonBranches measureBranchesOf(const SkeletonGraph& skeleton, const PointLis
         }
     };
     std::set<Edge> walked;
-    const auto walk = [&](int a, int b) { return walked.insert(boneBetween(a, b)).second; };
+    const auto walk = [&](int a, int b) { return walked.insert(edgeBetween(a, b)).second; };
 
     int part = 0;
     for (int root : partRoots(skeleton, options.up, options.root)) {

@@ -83,7 +83,7 @@ void normalizeEdges(std::vector<Edge>& edges) {
 }
 
 bool hasEdge(const std::vector<Edge>& edges, int a, int b) {
-    const Edge wanted{std::min(a, b), std::max(a, b)};
+    const Edge wanted = edgeBetween(a, b);
     return std::find(edges.begin(), edges.end(), wanted) != edges.end();
 }
 
@@ -101,7 +101,7 @@ std::vector<char> inferredFlags(const SkeletonGraph& graph) {
     std::vector<char> flags;
     flags.reserve(graph.edges.size());
     for (const Edge& e : graph.edges) {
-        const Edge sorted{std::min(e[0], e[1]), std::max(e[0], e[1])};
+        const Edge sorted = edgeBetween(e[0], e[1]);
         flags.push_back(std::binary_search(graph.inferred.begin(), graph.inferred.end(), sorted) ? 1 : 0);
     }
     return flags;
@@ -135,7 +135,7 @@ std::string invariantViolation(const SkeletonGraph& graph) {
             why << "node " << e[0] << " is connected to itself";
             return why.str();
         }
-        sorted.push_back({std::min(e[0], e[1]), std::max(e[0], e[1])});
+        sorted.push_back(edgeBetween(e[0], e[1]));
     }
     std::sort(sorted.begin(), sorted.end());
     const auto twin = std::adjacent_find(sorted.begin(), sorted.end());
@@ -144,7 +144,7 @@ std::string invariantViolation(const SkeletonGraph& graph) {
         return why.str();
     }
     for (const Edge& e : graph.inferred) {
-        if (!std::binary_search(sorted.begin(), sorted.end(), Edge{std::min(e[0], e[1]), std::max(e[0], e[1])})) {
+        if (!std::binary_search(sorted.begin(), sorted.end(), edgeBetween(e[0], e[1]))) {
             why << "the inferred bone " << e[0] << "-" << e[1] << " is not a bone";
             return why.str();
         }

@@ -4,6 +4,7 @@
 
 #include "pcskeleton/contraction/point_cloud_input.h"
 
+#include <algorithm>
 #include <array>
 #include <limits>
 #include <string>
@@ -12,6 +13,9 @@
 namespace pcskeleton {
 
 using Edge = std::array<int, 2>;  // node indices, smaller first
+
+// The edge between nodes a and b as edge lists hold it (its lower-numbered end first).
+inline Edge edgeBetween(int a, int b) { return Edge{std::min(a, b), std::max(a, b)}; }
 
 struct SkeletonGraph {
     PointList nodes;              // input frame

@@ -683,7 +683,7 @@ Edge mostStretchedBone(const SkeletonGraph& graph, const std::vector<int>& cycle
         const int a = cycle[i], b = cycle[(i + 1) % cycle.size()];
         const double reach = graph.radii[a] + graph.radii[b];
         const double stretch = (graph.nodes[a] - graph.nodes[b]).norm() / std::max(reach, 1e-300);
-        if (stretch > bestStretch) bestStretch = stretch, best = {std::min(a, b), std::max(a, b)};
+        if (stretch > bestStretch) bestStretch = stretch, best = edgeBetween(a, b);
     }
     return best;
 }
