@@ -65,6 +65,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <random>
 #include <cstdlib>
 #include <filesystem>
@@ -316,28 +317,66 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
-    const bool write = !args.empty() && args[0] == "--write" && args.size() >= 4;
-    const bool outliers = std::find(args.begin(), args.end(), "--outliers") != args.end();
-    const bool paper = std::find(args.begin(), args.end(), "--paper") != args.end();
+    // One pass: options with a value take the next argument, --write the next three; what is
+    // left must be numbers (POINTS, then --outliers' factors). A word where a number belongs is
+    // refused rather than read as 0.
     const std::set<std::string> optionsWithValue{"--contracted-points", "--shape", "--gap-limit", "--loop-opening",
                                                  "--loop-clearance", "--k",                 "--denoise",
                                                  "--gap-stretch",      "--scans",         "--min-hole",
                                                  "--seed"};
-    std::size_t n = 6000;
+    const std::set<std::string> textValues{"--shape", "--scans"};
+    std::set<std::string> given;
+    std::map<std::string, std::string> values;
+    std::vector<std::string> written;  // SHAPE CONDITION FILE
     std::vector<double> numbers;
-    for (std::size_t a = write ? 4 : 0; a < args.size(); ++a) {
-        if (optionsWithValue.count(args[a])) ++a;  // its value is not a size
-        else if (args[a].rfind("--", 0) != 0) numbers.push_back(std::atof(args[a].c_str()));
+    const auto refuse = [](const std::string& problem) {
+        std::fprintf(stderr, "bench_robustness: %s\n%s", problem.c_str(), kUsage);
+        return 2;
+    };
+    const auto parseNumber = [](const std::string& text, double& value) {
+        char* end = nullptr;
+        value = std::strtod(text.c_str(), &end);
+        return !text.empty() && end == text.c_str() + text.size() && std::isfinite(value);
+    };
+    for (std::size_t a = 0; a < args.size(); ++a) {
+        const std::string& arg = args[a];
+        if (arg == "--write") {
+            if (a + 3 >= args.size()) return refuse("--write needs SHAPE CONDITION FILE");
+            written.assign(args.begin() + long(a) + 1, args.begin() + long(a) + 4);
+            a += 3;
+        } else if (optionsWithValue.count(arg)) {
+            if (a + 1 >= args.size()) return refuse(arg + " needs a value");
+            double number = 0;
+            if (!textValues.count(arg) && !parseNumber(args[a + 1], number)) {
+                return refuse(arg + " needs a number, not '" + args[a + 1] + "'");
+            }
+            values[arg] = args[++a];
+        } else if (flags.count(arg)) {
+            given.insert(arg);
+        } else {
+            double number = 0;
+            if (!parseNumber(arg, number)) return refuse("'" + arg + "' is not a number");
+            numbers.push_back(number);
+        }
     }
-    if (!numbers.empty()) n = std::size_t(numbers[0]);
+    const bool write = !written.empty();
+    const bool outliers = given.count("--outliers") > 0;
+    const bool paper = given.count("--paper") > 0;
+    std::size_t n = 6000;
+    // Fewer points than this leave a shape's thinnest parts without a sample.
+    constexpr double kFewestPoints = 100;
+    if (!numbers.empty()) {
+        if (!(numbers[0] >= kFewestPoints && numbers[0] <= 1e9)) return refuse("POINTS must be between 100 and 1e9");
+        n = std::size_t(numbers[0]);
+    }
     SkeletonParameters pipeline = paper ? SkeletonParameters::paper() : SkeletonParameters{};
-    if (std::find(args.begin(), args.end(), "--no-refine") != args.end()) pipeline.graph.refine = false;
-    if (std::find(args.begin(), args.end(), "--no-recentre") != args.end()) pipeline.graph.recentre = false;
-    if (std::find(args.begin(), args.end(), "--extend-tips") != args.end()) pipeline.graph.extendTips = true;
-    if (std::find(args.begin(), args.end(), "--no-link-limit") != args.end()) pipeline.graph.linkLimit = 0;
+    if (given.count("--no-refine")) pipeline.graph.refine = false;
+    if (given.count("--no-recentre")) pipeline.graph.recentre = false;
+    if (given.count("--extend-tips")) pipeline.graph.extendTips = true;
+    if (given.count("--no-link-limit")) pipeline.graph.linkLimit = 0;
     const auto numberAfter = [&](const char* option, double& value) {
-        const auto found = std::find(args.begin(), args.end(), option);
-        if (found != args.end() && found + 1 != args.end()) value = std::atof((found + 1)->c_str());
+        const auto found = values.find(option);
+        if (found != values.end()) value = std::strtod(found->second.c_str(), nullptr);
     };
     numberAfter("--gap-limit", pipeline.graph.gapLimit);
     numberAfter("--loop-opening", pipeline.graph.refinementLimits.minOpening);
@@ -352,21 +391,19 @@ int main(int argc, char** argv) {
     numberAfter("--denoise", denoising);
     pipeline.contraction.neighbourCount = int(neighbours);
     pipeline.contraction.denoisingPasses = int(denoising);
-    if (std::find(args.begin(), args.end(), "--full-resolution") != args.end()) pipeline.resolution.maxContractedPoints = 0;
+    if (given.count("--full-resolution")) pipeline.resolution.maxContractedPoints = 0;
     // --shape TEXT: only the shapes whose name contains TEXT (e.g. the slow ones at 1M points).
-    const auto shapeFilter = std::find(args.begin(), args.end(), "--shape");
-    const std::string onlyShape = shapeFilter != args.end() && shapeFilter + 1 != args.end() ? *(shapeFilter + 1) : "";
-    const auto contractedPoints = std::find(args.begin(), args.end(), "--contracted-points");
-    if (contractedPoints != args.end() && contractedPoints + 1 != args.end()) {
-        pipeline.resolution.maxContractedPoints = std::strtoull((contractedPoints + 1)->c_str(), nullptr, 10);
+    const std::string onlyShape = values.count("--shape") ? values["--shape"] : "";
+    double contractedPoints = 0;
+    if (values.count("--contracted-points")) {
+        numberAfter("--contracted-points", contractedPoints);
+        pipeline.resolution.maxContractedPoints = std::size_t(contractedPoints);
     }
-    const auto scansOption = std::find(args.begin(), args.end(), "--scans");
-    const std::string scans = scansOption != args.end() && scansOption + 1 != args.end() ? *(scansOption + 1)
-                                                                                      : PCSKELETON_SCANS_DIR;
-    const bool checkInvariant = std::find(args.begin(), args.end(), "--check-invariant") != args.end();
+    const std::string scans = values.count("--scans") ? values["--scans"] : PCSKELETON_SCANS_DIR;
+    const bool checkInvariant = given.count("--check-invariant") > 0;
     const std::vector<Subject> subjects = robustnessSubjects();
 
-    if (write) return writeCase(subjects, args[1], args[2], args[3], n, seed);
+    if (write) return writeCase(subjects, written[0], written[1], written[2], n, seed);
     if (outliers) {
         OutlierParameters parameters;
         if (numbers.size() > 1) parameters.isolationFactor = numbers[1];
