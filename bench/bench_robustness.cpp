@@ -300,30 +300,25 @@ const char* const kUsage =
 int main(int argc, char** argv) {
     pcskeleton::restartWithPassiveOpenMpWaits(argv);
     std::vector<std::string> args(argv + 1, argv + argc);
-    const std::set<std::string> flags{"--paper",         "--no-refine",         "--no-recentre",
-                                      "--extend-tips",   "--no-link-limit",     "--full-resolution",
-                                      "--outliers",      "--write",             "--contracted-points",
-                                      "--shape",         "--gap-limit",         "--loop-opening",
-                                      "--loop-clearance", "--k",                 "--denoise",
-                                      "--gap-stretch",   "--scans",             "--check-invariant",
-                                      "--min-hole",      "--seed"};
+    // Switches stand alone; options with a value take the next argument; --write the next three.
+    const std::set<std::string> switches{"--paper",         "--no-refine",        "--no-recentre", "--extend-tips",
+                                         "--no-link-limit", "--full-resolution", "--outliers",    "--check-invariant"};
+    const std::set<std::string> optionsWithValue{"--contracted-points", "--shape", "--gap-limit", "--loop-opening",
+                                                 "--loop-clearance", "--k",                 "--denoise",
+                                                 "--gap-stretch",      "--scans",         "--min-hole",
+                                                 "--seed"};
     for (const std::string& arg : args) {
         if (arg == "--help" || arg == "-h") {
             std::printf("%s", kUsage);
             return 0;
         }
-        if (arg.rfind("--", 0) == 0 && !flags.count(arg)) {
+        if (arg.rfind("--", 0) == 0 && arg != "--write" && !switches.count(arg) && !optionsWithValue.count(arg)) {
             std::fprintf(stderr, "bench_robustness: unknown option %s\n%s", arg.c_str(), kUsage);
             return 2;
         }
     }
-    // One pass: options with a value take the next argument, --write the next three; what is
-    // left must be numbers (POINTS, then --outliers' factors). A word where a number belongs is
-    // refused rather than read as 0.
-    const std::set<std::string> optionsWithValue{"--contracted-points", "--shape", "--gap-limit", "--loop-opening",
-                                                 "--loop-clearance", "--k",                 "--denoise",
-                                                 "--gap-stretch",      "--scans",         "--min-hole",
-                                                 "--seed"};
+    // One pass; what is left must be numbers (POINTS, then --outliers' factors). A word where a
+    // number belongs is refused rather than read as 0.
     const std::set<std::string> textValues{"--shape", "--scans"};
     std::set<std::string> given;
     std::map<std::string, std::string> values;
@@ -351,7 +346,7 @@ int main(int argc, char** argv) {
                 return refuse(arg + " needs a number, not '" + args[a + 1] + "'");
             }
             values[arg] = args[++a];
-        } else if (flags.count(arg)) {
+        } else if (switches.count(arg)) {
             given.insert(arg);
         } else {
             double number = 0;
@@ -394,11 +389,9 @@ int main(int argc, char** argv) {
     if (given.count("--full-resolution")) pipeline.resolution.maxContractedPoints = 0;
     // --shape TEXT: only the shapes whose name contains TEXT (e.g. the slow ones at 1M points).
     const std::string onlyShape = values.count("--shape") ? values["--shape"] : "";
-    double contractedPoints = 0;
-    if (values.count("--contracted-points")) {
-        numberAfter("--contracted-points", contractedPoints);
-        pipeline.resolution.maxContractedPoints = std::size_t(contractedPoints);
-    }
+    double contractedPoints = double(pipeline.resolution.maxContractedPoints);
+    numberAfter("--contracted-points", contractedPoints);
+    pipeline.resolution.maxContractedPoints = std::size_t(contractedPoints);
     const std::string scans = values.count("--scans") ? values["--scans"] : PCSKELETON_SCANS_DIR;
     const bool checkInvariant = given.count("--check-invariant") > 0;
     const std::vector<Subject> subjects = robustnessSubjects();
