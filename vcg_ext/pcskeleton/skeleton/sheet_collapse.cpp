@@ -41,11 +41,17 @@ constexpr std::size_t kLayerProbeStride = 7;  // every seventh point is probed
 constexpr double kParallelSheets = 0.85;      // |cos| of the angle between their planes
 // Points next to a patch within this many thinning radii of its plane join it.
 constexpr double kBandRadii = 0.5;
-// The grid's cell, in thinning radii; gaps narrower than the thinning radius or than
-// kGapSpacings point spacings are closed; spurs shorter than kSpurRadii are cut off. The
-// spacing is the one that all but a tenth of the points have to their nearest: on an unevenly
-// dense scan, the sparse part's (whose gaps a median spacing leaves open as false holes).
+// The grid's cell, in thinning radii. The grid is closed with a disc of kClosingRadii
+// thinning radii, or of kGapSpacings point spacings where that is wider: a hole survives
+// when such a disc fits in it, and narrower gaps are filled. A plate seen at a grazing angle
+// comes back in bands, one per row of the scanner's pixels, with empty bands between them;
+// a disc of one thinning radius left parts of those open, as false holes between the bands
+// (docs/benchmarks.md, "Scan lines across a plate").
+// Spurs shorter than kSpurRadii are cut off. The point spacing is the one that all but a
+// tenth of the points have to their nearest: on an unevenly dense scan, the sparse part's
+// (whose gaps a median spacing leaves open as false holes).
 constexpr double kCellRadii = 0.5;
+constexpr double kClosingRadii = 1.5;
 constexpr double kGapSpacings = 2.5;
 constexpr double kGapQuantile = 0.9;
 // Bounds on the grid's work where the node spacing is tiny against the patch or against its
@@ -289,7 +295,8 @@ void moveOntoAxis(const PointList& original, const PointIndex& index, const std:
     const double gap = spacing.empty() ? radius : quantile(spacing, kGapQuantile);
     const double cell = std::max({kCellRadii * radius, std::max(maxU - minU, maxV - minV) / kLargestGridSide,
                                   kGapSpacings * gap / kMostClosingCells});
-    const int close = std::max({1, int(std::ceil(kGapSpacings * gap / cell)), int(std::ceil(radius / cell - 1e-9))});
+    const int close = std::max(
+        {1, int(std::ceil(kGapSpacings * gap / cell)), int(std::ceil(kClosingRadii * radius / cell - 1e-9))});
     const int margin = close + 2;
     Grid occupied(int((maxU - minU) / cell) + 1 + 2 * margin, int((maxV - minV) / cell) + 1 + 2 * margin);
     std::vector<std::size_t> cellOf;
