@@ -1,7 +1,8 @@
-# Sourced by meshlab_env.sh, test_newer_meshlab.sh and test_packages.sh: the kernel file
-# systems a Debian environment (chroot) needs while something runs in it, mounted for that
-# time only, and the mirror to make one from. A cached environment is never left with
-# /dev bound into it, where deleting the cache would reach the machine's own device files.
+# Sourced by meshlab_env.sh, debian_minbase.sh, test_newer_meshlab.sh and test_packages.sh:
+# the kernel file systems a Debian environment (chroot) needs while something runs in it,
+# mounted for that time only, and the mirror to make one from. A cached environment is never
+# left with /dev bound into it, where deleting the cache would reach the machine's own device
+# files.
 
 # chroot_mount CHROOT [HOST_DIR...]: /proc, /sys, /dev, and each HOST_DIR at its own path.
 chroot_mount() {

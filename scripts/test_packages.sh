@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# The Debian packages on a clean system: a minimal Debian of this machine's release, made
-# from Debian's archive (debootstrap --variant=minbase, cached in /var/cache/pcskeleton and
-# copied afresh for every run), gets them with `apt-get install ./*.deb` and nothing else
-# of ours, then checks there what a user would do:
+# The Debian packages on a clean system: a minimal Debian of this machine's release
+# (scripts/debian_minbase.sh, cached in /var/cache/pcskeleton and copied afresh for every
+# run) gets them with `apt-get install ./*.deb` and nothing else of ours, then checks there
+# what a user would do:
 #   - MeshLab's own plugin loader loads both plugins (meshlabserver with MeshLab 2020.09,
 #     meshlab-run with 2021+), and the shipped skeleton script runs through it on an example;
 #   - `pcskeleton --version` says the packages' version, `man pcskeleton` exists, and a run
@@ -22,21 +22,11 @@ DEBS="$(cd "${1:?usage: $0 DEB_DIR}" && pwd)"
 ls "$DEBS"/*.deb >/dev/null 2>&1 || { echo "no .deb in $DEBS: run scripts/make_packages.sh first" >&2; exit 1; }
 SUITE="${2:-$(. /etc/os-release && echo "$VERSION_CODENAME")}"
 ENV_DIR="${PCSKELETON_ENV_DIR:-/var/cache/pcskeleton}"
-BASE="$ENV_DIR/$SUITE-minbase" CLEAN="$ENV_DIR/$SUITE-clean" ARCHIVES="$ENV_DIR/$SUITE-archives"
+CLEAN="$ENV_DIR/$SUITE-clean" ARCHIVES="$ENV_DIR/$SUITE-archives"
 log() { printf '[test_packages] %s\n' "$*" >&2; }
 
 source "$ROOT/scripts/chroot_mounts.sh"
-if [ ! -f "$BASE/.pcskeleton-ready" ]; then
-  command -v debootstrap >/dev/null || { apt-get update -qq; apt-get install -y -qq debootstrap >/dev/null; }
-  mirror="$(debian_mirror)"
-  log "creating a minimal Debian $SUITE in $BASE from $mirror"
-  rm -rf "$BASE"
-  debootstrap --variant=minbase "$SUITE" "$BASE" "$mirror" >&2
-  printf 'Types: deb\nURIs: %s\nSuites: %s %s-updates\nComponents: main\nSigned-By: /usr/share/keyrings/debian-archive-keyring.gpg\n' \
-    "$mirror" "$SUITE" "$SUITE" >"$BASE/etc/apt/sources.list.d/debian.sources"
-  rm -f "$BASE/etc/apt/sources.list"
-  touch "$BASE/.pcskeleton-ready"
-fi
+BASE="$(bash "$ROOT/scripts/debian_minbase.sh" "$SUITE")"
 
 log "a fresh copy of the minimal Debian $SUITE in $CLEAN"
 unmount_clean() { umount "$CLEAN/var/cache/apt/archives" 2>/dev/null || true; chroot_unmount "$CLEAN"; }
