@@ -45,11 +45,17 @@ wait_window "MeshLab 20" 30
 WINDOW="$(xdotool search --onlyvisible --name "MeshLab 20" | head -1)"
 place_window "$WINDOW" 1280 900
 
-click 74 10            # Edit
-shot edit-menu
 # Edit Skeleton (the ring is the current layer): the menu's last entry, as edit plugins are
 # listed by file name; 2020.09 has it higher up.
-if [[ "$VERSION" == 2020.* ]]; then click 128 434 2; else xdotool key Up Return; sleep 2; fi
+if [[ "$VERSION" == 2020.* ]]; then
+  open_menu 74 10 128 434  # Edit
+  shot edit-menu
+  click 128 434 0
+else
+  open_menu 74 10 74 40    # Edit
+  shot edit-menu
+  xdotool key Up Return
+fi
 expect_nodes 12 0 tool-started
 
 # Hovering: the panel names the branch of the node under the cursor (below its buttons), and
@@ -118,7 +124,9 @@ click "${RECONSTRUCT_BUTTON[@]}" 0
 wait_screen 120 reconstructed "no reconstructed surface appeared in the view" surface_in_view
 
 # Save the layer: Filters > Point Set > Export Skeleton, with its default file name.
-click "${FILTERS[@]}"; click "${POINT_SET[@]}"; click "${EXPORT_ITEM[@]}" 1.5
+open_menu "${FILTERS[@]}" "${POINT_SET[@]}"
+open_menu "${POINT_SET[@]}" "${EXPORT_ITEM[@]}"
+click "${EXPORT_ITEM[@]}" 0
 wait_window "Export Skeleton" 10
 shot export-dialog
 dialog_buttons "Export Skeleton"

@@ -65,6 +65,28 @@ place_window() {  # window, width, height
   wait_until 30 "the window did not stay at 0,0 with size $2x$3" window_placed "$@"
 }
 click() { xdotool mousemove "$1" "$2" click 1; sleep "${3:-0.8}"; }
+# A menu covers the point once a visible window of MeshLab's (MESHLAB_PID) other than its
+# main window ("MeshLab 20..."), a menu or a submenu, lies over it: a click there then
+# reaches the menu, not what was under it when it was still closing or not yet open.
+menu_covers() {  # x, y
+  local id X Y WIDTH HEIGHT SCREEN WINDOW
+  for id in $(xdotool search --maxdepth 1 --onlyvisible --pid "$MESHLAB_PID" 2>/dev/null); do
+    WIDTH=""
+    case "$(xdotool getwindowname "$id" 2>/dev/null)" in "MeshLab 20"*) continue ;; esac
+    eval "$(xdotool getwindowgeometry --shell "$id" 2>/dev/null | tr -d ' ')"
+    [ -n "$WIDTH" ] || continue
+    if [ "$1" -ge "$X" ] && [ "$1" -lt $((X + WIDTH)) ] && [ "$2" -ge "$Y" ] && [ "$2" -lt $((Y + HEIGHT)) ]; then
+      return 0
+    fi
+  done
+  return 1
+}
+# Clicks a menu (x, y: the menu bar's entry, or a submenu's entry in an open menu) and waits
+# until what it opens covers the next entry to click (next x, next y).
+open_menu() {  # x, y, next x, next y
+  xdotool mousemove "$1" "$2" click 1
+  wait_until 20 "no menu opened over $3,$4 after a click at $1,$2" menu_covers "$3" "$4"
+}
 # A filter dialog's bottom row, from the window's geometry (a new parameter or a longer
 # description moves it): sets APPLY and CLOSE (Close at a quarter of its width, Apply at
 # three quarters) and DIALOG_WIDTH, DIALOG_HEIGHT.

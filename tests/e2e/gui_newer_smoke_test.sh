@@ -40,10 +40,10 @@ wait_screen_still opened 30
 others="$(xdotool search --onlyvisible --name '.' getwindowname %@ 2>/dev/null | grep -v "^MeshLab $VERSION" || true)"
 [ -z "$others" ] || fail "MeshLab opened with another window: $others"
 
-click "${FILTERS[@]}"
-click "${POINT_SET[@]}"
+open_menu "${FILTERS[@]}" "${POINT_SET[@]}"
+open_menu "${POINT_SET[@]}" "${SKELETON_ITEM[@]}"
 shot point-set-menu
-click "${SKELETON_ITEM[@]}" 1.5
+click "${SKELETON_ITEM[@]}" 0
 wait_window "Compute Curve Skeleton" 10
 shot skeleton-dialog
 dialog_buttons "Compute Curve Skeleton"
@@ -56,7 +56,7 @@ click "${APPLY[@]}" 6
 shot skeleton-applied
 click "${CLOSE[@]}"
 
-click "${EDIT_MENU[@]}"
+open_menu "${EDIT_MENU[@]}" "${EDIT_MENU[0]}" 40
 shot edit-menu
 xdotool key Up Return   # the last entry: Edit Skeleton (plugins are listed by file name)
 skeleton_on_screen() {

@@ -27,10 +27,10 @@ trap 'kill $MESHLAB_PID 2>/dev/null || true' EXIT
 wait_window "MeshLab 20" 30
 wait_screen_still opened 30
 
-click 120 10          # Filters
-click 160 386         # Point Set
+open_menu 120 10 160 386    # Filters
+open_menu 160 386 640 486   # Point Set
 shot point-set-menu
-click 640 486 1.5     # Contract Point Cloud (Laplacian)
+click 640 486 0       # Contract Point Cloud (Laplacian)
 wait_window "Contract Point Cloud \(Laplacian\)" 10
 shot filter-dialog
 dialog_buttons "Contract Point Cloud"
@@ -68,9 +68,9 @@ sys.exit(0 if difference < 1e-5 else 1)
 
 # The whole pipeline from the menu, then the skeleton exported with its edges.
 click 540 114         # make the input layer current
-click 120 10          # Filters
-click 160 386         # Point Set
-click 640 436 1.5     # Compute Curve Skeleton (Laplacian Contraction)
+open_menu 120 10 160 386    # Filters
+open_menu 160 386 640 436   # Point Set
+click 640 436 0       # Compute Curve Skeleton (Laplacian Contraction)
 wait_window "Compute Curve Skeleton" 10
 shot skeleton-dialog
 dialog_buttons "Compute Curve Skeleton"
@@ -82,9 +82,9 @@ echo "the skeleton dialog: ${DIALOG_WIDTH}x${DIALOG_HEIGHT}"
 click "${APPLY[@]}" 5
 click "${CLOSE[@]}"
 shot skeleton-layer
-click 120 10          # Filters
-click 160 386         # Point Set
-click 640 536 1.5     # Export Skeleton (PLY with edges, OBJ, CG)
+open_menu 120 10 160 386    # Filters
+open_menu 160 386 640 536   # Point Set
+click 640 536 0       # Export Skeleton (PLY with edges, OBJ, CG)
 wait_window "Export Skeleton" 10
 shot export-dialog
 dialog_buttons "Export Skeleton"
