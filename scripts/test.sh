@@ -45,11 +45,11 @@ trap stage_summary EXIT
 # (its own process group, so that a failed run stops it) that those stages wait for. Only
 # where no password is asked: as root, or with sudo that needs none; elsewhere each stage
 # makes its own, as before.
-environments_pid="" environments_log="" environments_start=0
+environments_pid="" environments_log=""
 start_environments() {  # "minbase SUITE" and "meshlab VERSION" words
   [ $# -gt 0 ] || return 0
   [ ${#SUDO[@]} -eq 0 ] || sudo -n true 2>/dev/null || return 0
-  environments_log="$(mktemp)" environments_start=$SECONDS
+  environments_log="$(mktemp)"
   set -m
   "${SUDO[@]}" bash -euo pipefail -c '
     root="$1"; shift
@@ -59,7 +59,8 @@ start_environments() {  # "minbase SUITE" and "meshlab VERSION" words
         meshlab) bash "$root/scripts/meshlab_env.sh" "$2" ;;
       esac >/dev/null
       shift 2
-    done' _ "$ROOT" "$@" >"$environments_log" 2>&1 &
+    done
+    echo "[environments] ready in $SECONDS s"' _ "$ROOT" "$@" >"$environments_log" 2>&1 &
   environments_pid=$!
   set +m
 }
@@ -72,9 +73,9 @@ wait_environments() {
     tail -40 "$environments_log"; rm -f "$environments_log"
     echo "FAIL: making the Debian environments (exit status $status)"; exit 1
   fi
-  grep -E '^\[(meshlab_env|debian_minbase)\]' "$environments_log" || true
+  grep -E '^\[(meshlab_env|debian_minbase|environments)\]' "$environments_log" || true
   rm -f "$environments_log"
-  echo "The Debian environments, made in the background: $((SECONDS - environments_start)) s, of which this run waited $((SECONDS - waited)) s"
+  echo "The Debian environments were made in the background; this run waited $((SECONDS - waited)) s for them"
 }
 stop_environments() {
   [ -n "$environments_pid" ] || return 0
