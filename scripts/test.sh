@@ -15,8 +15,8 @@
 #      packages there.
 # The Debian environments of 3-5 (scripts/meshlab_env.sh, scripts/debian_minbase.sh: a few
 # minutes and up to 2 GB each, cached in /var/cache/pcskeleton) are made from Debian's
-# archive by a background job during 2, which keeps the cores busy while they are mostly
-# downloads; each of 3-5 waits for that job. At the end it prints how long each stage took.
+# archive by a background job that starts with 1's tests (run one at a time, they leave a
+# core mostly idle); each of 3-5 waits for that job. At the end it prints how long each stage took.
 # CTest arguments ("-R io", ...) apply to every run; PCSKELETON_SANITIZE=0 skips 2,
 # PCSKELETON_PACKAGES=0 skips 3, PCSKELETON_NEWER_MESHLAB=0 skips 4 and 5.
 set -euo pipefail
@@ -42,16 +42,18 @@ stage_summary() {
 trap stage_summary EXIT
 
 # The Debian environments of the stages after the sanitizer run, made by one background job
-# (its own process group, so that a failed run stops it) that those stages wait for. Only
-# where no password is asked: as root, or with sudo that needs none; elsewhere each stage
-# makes its own, as before.
+# that those stages wait for. It starts with the main build's tests, which run one at a time
+# and leave a core mostly idle, and runs at a lower priority, so that the sanitizer build
+# keeps the cores where the job is not done by then. Its own process group: a failed run
+# stops it. Only where no password is asked (as root, or with sudo that needs none);
+# elsewhere each stage makes its own.
 environments_pid="" environments_log=""
 start_environments() {  # "minbase SUITE" and "meshlab VERSION" words
   [ $# -gt 0 ] || return 0
   [ ${#SUDO[@]} -eq 0 ] || sudo -n true 2>/dev/null || return 0
   environments_log="$(mktemp)"
   set -m
-  "${SUDO[@]}" bash -euo pipefail -c '
+  "${SUDO[@]}" nice -n 10 bash -euo pipefail -c '
     root="$1"; shift
     while [ $# -gt 0 ]; do
       case "$1" in
@@ -86,8 +88,6 @@ stop_environments() {
 
 stage "Setup and the main build (build/)"
 bash "$ROOT/scripts/build.sh"
-stage "The main build's tests"
-(cd "$ROOT/build" && ctest --output-on-failure -j1 "$@")
 
 # What the runs in Debian environments below test: the Debian packages on a clean Debian of
 # this release; the plugins against each newer MeshLab; on Debian 12, the README's two
@@ -112,6 +112,9 @@ if [ "${PCSKELETON_NEWER_MESHLAB:-1}" != 0 ]; then
   fi
 fi
 start_environments "${environments[@]}"
+
+stage "The main build's tests"
+(cd "$ROOT/build" && ctest --output-on-failure -j1 "$@")
 
 if [ "${PCSKELETON_SANITIZE:-1}" != 0 ]; then
   stage "The library, CLI and unit tests under AddressSanitizer + UndefinedBehaviorSanitizer (build-sanitize/)"
