@@ -3,8 +3,8 @@
 # clone of this checkout inside the trixie environment of scripts/meshlab_env.sh runs
 # scripts/demo.sh, then scripts/test.sh: there without the nested newer-MeshLab runs and
 # the packages' clean-system check, which need chroots of their own, and without the
-# sanitizer pass, which the Debian 12 run makes on the same code (8 of this run's 18
-# minutes on a cold CI machine). Then it makes the Debian 13 packages in the clone and
+# sanitizer pass, which the Debian 12 run makes on the same code (here it would build
+# and run everything a second time). Then it makes the Debian 13 packages in the clone and
 # checks them on a clean Debian 13 (scripts/test_packages.sh). Needs root;
 # scripts/test.sh runs it on bookworm.
 # usage: scripts/test_debian13_native.sh [ctest arguments]
