@@ -16,7 +16,8 @@
 # The Debian environments of 3-5 (scripts/meshlab_env.sh, scripts/debian_minbase.sh: a few
 # minutes and up to 2 GB each, cached in /var/cache/pcskeleton) are made from Debian's
 # archive by a background job that starts with 1's tests (run one at a time, they leave a
-# core mostly idle); each of 3-5 waits for that job. At the end it prints how long each stage took.
+# core mostly idle); each of 3-5 waits for that job. At the end it prints how long each
+# stage took.
 # CTest arguments ("-R io", ...) apply to every run; PCSKELETON_SANITIZE=0 skips 2,
 # PCSKELETON_PACKAGES=0 skips 3, PCSKELETON_NEWER_MESHLAB=0 skips 4 and 5.
 set -euo pipefail
@@ -143,4 +144,3 @@ if [ $debian13 = 1 ]; then
   wait_environments
   "${SUDO[@]}" bash "$ROOT/scripts/test_debian13_native.sh" "$@"
 fi
-wait_environments
