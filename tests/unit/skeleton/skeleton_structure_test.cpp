@@ -392,3 +392,103 @@ TEST(SkeletonStructure, AnArmJoinedToTheBodyAcrossEmptySpaceIsABoneOverAGap) {
     const ArmByTheBody chain = armByTheBody(0, false);
     EXPECT_TRUE(bonesOverDataGaps(chain.graph, chain.points, pointsOfNodes(chain.graph), stretch).empty());
 }
+
+namespace {
+
+// A tube of radius 0.2 along the chain (x from 0 to 1) that turns by `turnDegrees` at node
+// 10 and goes on for 0.8 (nodes 11..18): their walls, and the bend's outer corner (the part
+// of a sphere around node 10 beyond the ends of both arms).
+struct Bend {
+    SkeletonGraph graph = straightChain();
+    PointList points;
+    int junction = 10;
+    Point outerCorner;  // the direction out of the bend's outer corner
+};
+
+Bend bentTube(double turnDegrees) {
+    Bend bend;
+    SkeletonGraph& g = bend.graph;
+    const double turn = turnDegrees * M_PI / 180.0;
+    const Point onward(std::cos(turn), std::sin(turn), 0);
+    const Point at = g.nodes[bend.junction];
+    bend.outerCorner = (Point(1, 0, 0) - onward).normalized();
+    int last = bend.junction;
+    for (int step = 1; step <= 8; ++step) last = addNode(g, at + kSpacing * step * onward, last);
+    const Point side = onward.cross(Point(0, 0, 1));
+    for (int i = 0; i <= 100; ++i) {
+        for (int a = 0; a < 24; ++a) {
+            const double c = 0.2 * std::cos(2.0 * M_PI * a / 24.0), s = 0.2 * std::sin(2.0 * M_PI * a / 24.0);
+            bend.points.emplace_back(0.01 * i, c, s);
+            if (i <= 80) bend.points.push_back(at + 0.01 * i * onward + c * side + s * Point(0, 0, 1));
+        }
+    }
+    for (int i = 1; i < 12; ++i) {
+        for (int j = 0; j < 24; ++j) {
+            const double polar = M_PI * i / 12.0, azimuth = 2.0 * M_PI * j / 24.0;
+            const Point offset = 0.2 * Point(std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth),
+                                             std::cos(polar));
+            if (offset.x() > 0 && offset.dot(onward) < 0) bend.points.push_back(at + offset);
+        }
+    }
+    return bend;
+}
+
+// Adds a limb from the junction along `direction` (nodes every 0.14, out to `length`) with
+// radius `radius`, and, past the corner, a tube of that radius around it out to `length`;
+// gives every point its nearest node. Returns the limb.
+Limb addLimb(Bend& bend, const Point& direction, double length, double radius) {
+    SkeletonGraph& g = bend.graph;
+    int tip = bend.junction;
+    for (double along = 0.14; along <= length + 1e-9; along += 0.14) {
+        tip = addNode(g, g.nodes[bend.junction] + along * direction, tip);
+        g.radii[tip] = radius;
+    }
+    const Point across = direction.cross(Point(0, 0, 1)).normalized();
+    for (double along = 0.3; along <= length + 1e-9; along += 0.02) {
+        for (int a = 0; a < 12; ++a) {
+            const double angle = 2.0 * M_PI * a / 12.0;
+            bend.points.push_back(g.nodes[bend.junction] + along * direction +
+                                  radius * (std::cos(angle) * across + std::sin(angle) * Point(0, 0, 1)));
+        }
+    }
+    giveEachPointItsNearestNode(g, bend.points);
+    for (const Limb& limb : tipLimbs(g)) {
+        if (limb.path.front() == tip) return limb;
+    }
+    return {};
+}
+
+bool judgedCorner(const Bend& bend, const Limb& limb) {
+    EXPECT_TRUE(limb.atJunction);
+    EXPECT_FALSE(isSpur(bend.graph, limb, kSpacing)) << "longer than the radius";
+    return isCornerLimb(bend.graph, limb, bend.points, pointsOfNodes(bend.graph));
+}
+
+}  // namespace
+
+TEST(SkeletonStructure, AShortLimbOutOfABendsOuterCornerIsACornerLimb) {
+    Bend bend = bentTube(90);
+    const Limb limb = addLimb(bend, bend.outerCorner, 0.28, 0.15);
+    EXPECT_TRUE(judgedCorner(bend, limb));
+    EXPECT_FALSE(isCornerLimb(bend.graph, limb, {}, pointsOfNodes(bend.graph))) << "no points, no judgement";
+}
+
+TEST(SkeletonStructure, AThinnerLimbAtABendIsNoCornerLimb) {
+    // The same limb, under a third as thick as the tube: a limb of its own off a thicker body.
+    Bend bend = bentTube(90);
+    EXPECT_FALSE(judgedCorner(bend, addLimb(bend, bend.outerCorner, 0.28, 0.06)));
+}
+
+TEST(SkeletonStructure, ALimbReachingPastTheCornerIsNoCornerLimb) {
+    // As thick as the tube, but going on to 0.84 from the bend: a real branch.
+    Bend bend = bentTube(90);
+    EXPECT_FALSE(judgedCorner(bend, addLimb(bend, bend.outerCorner, 0.84, 0.15)));
+}
+
+TEST(SkeletonStructure, ALimbOutOfABendsInnerSideOrOutOfAGentleBendIsNoCornerLimb) {
+    Bend bend = bentTube(90);
+    EXPECT_FALSE(judgedCorner(bend, addLimb(bend, -bend.outerCorner, 0.28, 0.15)));
+    // A tube turning by 20 degrees: its arms meet at 160, no corner to speak of.
+    Bend gentle = bentTube(20);
+    EXPECT_FALSE(judgedCorner(gentle, addLimb(gentle, gentle.outerCorner, 0.28, 0.15)));
+}

@@ -59,15 +59,27 @@ void mergeGroups(SkeletonGraph& skeleton, const std::vector<NodeGroup>& groups, 
     for (int& node : nodeMap) node = newIndex[node];
 }
 
-std::vector<NodeGroup> spurGroups(const SkeletonGraph& skeleton, const PointList& points, double nodeSpacing) {
+// Spurs and redundant limbs, and corner limbs, all judged on the same skeleton: each limb
+// with the junction it goes into.
+struct LimbsToRemove {
     std::vector<NodeGroup> groups;
+    int spurs = 0, corners = 0;
+};
+
+LimbsToRemove limbsToRemove(const SkeletonGraph& skeleton, const PointList& points, double nodeSpacing) {
+    LimbsToRemove limbs;
     const std::vector<std::vector<int>> nodePoints = pointsOfNodes(skeleton);
     for (const Limb& limb : tipLimbs(skeleton)) {
         if (isSpur(skeleton, limb, nodeSpacing) || isRedundantLimb(skeleton, limb, points, nodePoints, nodeSpacing)) {
-            groups.push_back({limb.path, limb.path.back()});
+            ++limbs.spurs;
+        } else if (isCornerLimb(skeleton, limb, points, nodePoints)) {
+            ++limbs.corners;
+        } else {
+            continue;
         }
+        limbs.groups.push_back({limb.path, limb.path.back()});
     }
-    return groups;
+    return limbs;
 }
 
 std::vector<NodeGroup> stragglingEndGroups(const SkeletonGraph& skeleton, double nodeSpacing) {
@@ -182,7 +194,8 @@ std::vector<NodeGroup> closeJunctionGroups(const SkeletonGraph& skeleton, double
 }  // namespace
 
 std::string describe(const RefinementReport& r) {
-    return "removed " + counted(std::size_t(r.spursRemoved), "spur") + ", trimmed " +
+    return "removed " + counted(std::size_t(r.spursRemoved), "spur") + " and " +
+           counted(std::size_t(r.cornerLimbsRemoved), "corner limb") + ", trimmed " +
            counted(std::size_t(r.endsTrimmed), "straggling end") + ", collapsed " +
            counted(std::size_t(r.cyclesCollapsed), "small loop") + ", cut " +
            counted(std::size_t(r.cyclesCut), "narrow loop") + ", " + counted(std::size_t(r.bridgesCut), "stray bridge") +
@@ -201,7 +214,9 @@ RefinementReport refineSkeleton(SkeletonGraph& skeleton, const PointList& points
         return int(groups.size());
     };
     for (int pass = 0; pass < kMaxPasses; ++pass) {
-        const int spurs = merge(spurGroups(skeleton, points, nodeSpacing));
+        const LimbsToRemove limbs = limbsToRemove(skeleton, points, nodeSpacing);
+        merge(limbs.groups);
+        const int spurs = limbs.spurs, corners = limbs.corners;
         const int ends = merge(stragglingEndGroups(skeleton, nodeSpacing));
         const int cycles = merge(spuriousCycleGroups(skeleton, nodeSpacing));
         const int cuts = pass == 0 ? openLoopsWithoutHoles(skeleton, points, nodeSpacing, refinementLimits, report) : 0;
@@ -210,11 +225,12 @@ RefinementReport refineSkeleton(SkeletonGraph& skeleton, const PointList& points
         const int bridges = gapBones + merge(strayBridgeGroups(skeleton));
         const int junctions = merge(closeJunctionGroups(skeleton, nodeSpacing));
         report.spursRemoved += spurs;
+        report.cornerLimbsRemoved += corners;
         report.endsTrimmed += ends;
         report.cyclesCollapsed += cycles;
         report.bridgesCut += bridges;
         report.junctionsMerged += junctions;
-        if (spurs + ends + cycles + cuts + bridges + junctions > 0) continue;
+        if (spurs + corners + ends + cycles + cuts + bridges + junctions > 0) continue;
         // Last, once the steps above leave the skeleton as it is: where a stray bridge joins
         // a limb's end to another part, they absorb the bridge's nodes, and a cut there
         // would leave them as a limb of their own.

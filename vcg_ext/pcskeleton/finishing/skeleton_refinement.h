@@ -2,8 +2,8 @@
 // the small artefacts noise leaves are removed. Not the paper's step; on by default
 // (SkeletonGraphParameters::refine says why). Criteria: see skeleton_structure.h.
 //
-// 1. Spurs and redundant limbs are absorbed into the junction they sprout from (which
-//    keeps its place).
+// 1. Spurs, redundant limbs and corner limbs are absorbed into the junction they sprout
+//    from (which keeps its place).
 //    The straggling end of a limb (a few nodes of a few noisy points past its end) is
 //    absorbed into the first node that owns enough points (which keeps its place).
 // 2. Each spurious cycle (a loop without a hole) collapses to one node at its centre.
@@ -37,15 +37,18 @@ namespace pcskeleton {
 
 struct RefinementReport {
     int spursRemoved = 0, endsTrimmed = 0, cyclesCollapsed = 0, cyclesCut = 0, bridgesCut = 0, junctionsMerged = 0;
-    int filledLoopsCut = 0;  // loops whose own points cover their inside (filledLoops)
+    int filledLoopsCut = 0;      // loops whose own points cover their inside (filledLoops)
+    int cornerLimbsRemoved = 0;  // limbs out of a bend's outer corner (isCornerLimb)
     std::vector<int> nodeMap;  // per node of the skeleton given: the node it became
     bool changedAnything() const {
-        return spursRemoved + endsTrimmed + cyclesCollapsed + cyclesCut + bridgesCut + junctionsMerged + filledLoopsCut > 0;
+        return spursRemoved + cornerLimbsRemoved + endsTrimmed + cyclesCollapsed + cyclesCut + bridgesCut +
+                   junctionsMerged + filledLoopsCut >
+               0;
     }
 };
 
-// "removed 2 spurs, trimmed 0 straggling ends, collapsed 1 small loop, cut 0 narrow loops,
-// 0 stray bridges, 1 loop over data, merged 0 pairs of close junctions"
+// "removed 2 spurs and 1 corner limb, trimmed 0 straggling ends, collapsed 1 small loop,
+// cut 0 narrow loops, 0 stray bridges, 1 loop over data, merged 0 pairs of close junctions"
 std::string describe(const RefinementReport& report);
 
 // `nodeSpacing` is the thinning radius, in the skeleton's units; `points` its input points

@@ -41,6 +41,28 @@ constexpr double kThroughCosine = -0.5;
 // The chain runs on from both ends of a U-turn bridge within 60 degrees of the same
 // direction (cosine above this): the parts it joins lie side by side.
 constexpr double kSameWayCosine = 0.5;
+// Corner limbs (isCornerLimb). The arms are read over this many bones from the junction,
+// as gap bridging reads a limb's direction: one bone zig-zags with the nodes' placement.
+constexpr std::size_t kCornerArmBones = 4;
+// The arms bend: they meet at 135 degrees or less (cosine above this); a straight tube's
+// meet at 180.
+constexpr double kCornerBendCosine = -0.7071;
+// The limb leaves into the outer corner: within 60 degrees (cosine above this) of the
+// direction away from both arms.
+constexpr double kCornerAimCosine = 0.5;
+// The limb is about as thick as the arms: its median radius at least this share of the
+// thinner arm's. A bend's outer wall belongs to the arms' own tube; a real limb off a thick
+// body is thinner than the body (docs/benchmarks.md).
+constexpr double kCornerThickness = 0.4;
+// How far the limb's points reach from the junction: all but the farthest tenth (noise).
+constexpr double kCornerReachQuantile = 0.9;
+// The limb ends within this many times the reach of a mitred bend of the thinner arm's
+// tube, r / sin(half the bend angle): the skeleton cuts the corner, so the junction lies
+// inside the bend, and noise widens the wall. The half angle is taken as 30 degrees at
+// least (a reach of at most 2 r): arms that leave the junction side by side make no corner
+// whose reach grows without bound.
+constexpr double kCornerSlack = 1.5;
+constexpr double kCornerMinHalfBendSine = 0.5;
 
 double boneLength(const SkeletonGraph& graph, int a, int b) { return (graph.nodes[a] - graph.nodes[b]).norm(); }
 
@@ -391,6 +413,66 @@ bool isRedundantLimb(const SkeletonGraph& graph, const Limb& limb, const PointLi
         }
     }
     return true;
+}
+
+namespace {
+
+// One of a junction's other bones, as isCornerLimb reads it: its direction and median radius
+// over up to kCornerArmBones bones from the junction.
+struct Arm {
+    Point direction = Point::Zero();  // zero when the bones end where they began
+    double radius = 0.0;
+};
+
+Arm armFrom(const SkeletonGraph& graph, const std::vector<std::vector<int>>& neighbours, int junction, int next) {
+    const std::vector<int> chain = walkChain(neighbours, junction, next);
+    const std::size_t last = std::min(kCornerArmBones, chain.size() - 1);
+    Arm arm;
+    const Point along = graph.nodes[std::size_t(chain[last])] - graph.nodes[std::size_t(junction)];
+    if (along.norm() > 0.0) arm.direction = along.normalized();
+    std::vector<double> radii;
+    for (std::size_t i = 1; i <= last; ++i) radii.push_back(graph.radii[std::size_t(chain[i])]);
+    arm.radius = median(std::move(radii));
+    return arm;
+}
+
+}  // namespace
+
+bool isCornerLimb(const SkeletonGraph& graph, const Limb& limb, const PointList& points,
+                  const std::vector<std::vector<int>>& nodePoints) {
+    if (!limb.atJunction || graph.pointNode.size() != points.size() || limb.path.size() < 2) return false;
+    const int junction = limb.path.back();
+    const auto neighbours = adjacencyLists(graph.nodeCount(), graph.edges);
+    if (neighbours[std::size_t(junction)].size() != 3) return false;
+    std::vector<Arm> arms;
+    for (int next : neighbours[std::size_t(junction)]) {
+        if (next != limb.path[limb.path.size() - 2]) arms.push_back(armFrom(graph, neighbours, junction, next));
+    }
+    if (arms.size() != 2 || arms[0].direction.isZero() || arms[1].direction.isZero()) return false;
+    const double bendCosine = arms[0].direction.dot(arms[1].direction);
+    const Point inward = arms[0].direction + arms[1].direction;
+    if (bendCosine < kCornerBendCosine || !(inward.norm() > 0.0)) return false;
+
+    // The limb's points: where they lie (their centroid) and how far they reach.
+    const Point& at = graph.nodes[std::size_t(junction)];
+    std::vector<double> distances;
+    std::vector<double> limbRadii;
+    Point centroid = Point::Zero();
+    for (std::size_t i = 0; i + 1 < limb.path.size(); ++i) {
+        limbRadii.push_back(graph.radii[std::size_t(limb.path[i])]);
+        for (int p : nodePoints[std::size_t(limb.path[i])]) {
+            distances.push_back((points[std::size_t(p)] - at).norm());
+            centroid += points[std::size_t(p)];
+        }
+    }
+    if (distances.empty()) return false;
+    const Point toLimb = centroid / double(distances.size()) - at;
+    if (!(toLimb.norm() > 0.0) || -toLimb.normalized().dot(inward.normalized()) < kCornerAimCosine) return false;
+    const double armRadius = std::min(arms[0].radius, arms[1].radius);
+    if (median(std::move(limbRadii)) < kCornerThickness * armRadius) return false;
+    const double halfBendSine = std::sqrt(0.5 * (1.0 - bendCosine));
+    const double cornerReach = armRadius / std::max(halfBendSine, kCornerMinHalfBendSine);
+    return quantile(std::move(distances), kCornerReachQuantile) <= kCornerSlack * cornerReach;
 }
 
 std::vector<std::vector<int>> shortCycleBasis(const SkeletonGraph& graph) {

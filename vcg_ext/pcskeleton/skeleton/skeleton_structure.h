@@ -9,6 +9,8 @@
 //   to the strip's edge) of a node off the limb. Noise, gaps and one-sided scans sprout
 //   such limbs from the side of a bone, and a leaf's or plate's rim from its mid-line; a
 //   real limb, however short, has points beyond the body it leaves;
+// - a corner limb is a short limb out of the outer corner of a bend, as thick as the tube
+//   that bends and reaching no farther than its corner;
 // - a cycle is spurious when its hole is not there: the cycle's nodes lie closer to their
 //   centre than the tube around them is thick, or than the node spacing;
 // - two junctions are close when the bone path between them is shorter than the node
@@ -81,6 +83,17 @@ std::vector<Edge> bonesAcrossGaps(const SkeletonGraph& graph, double nodeSpacing
 // per node (pointsOfNodes); false for a limb without points or not at a junction.
 bool isRedundantLimb(const SkeletonGraph& graph, const Limb& limb, const PointList& points,
                      const std::vector<std::vector<int>>& nodePoints, double nodeSpacing);
+
+// A corner limb: where a tube turns a corner, contraction can draw the bend's outer wall
+// into a short limb pointing out of it, longer than the radius (no spur) and with points
+// outside the other nodes' tubes (not redundant). A limb is one when the junction's two
+// other bones bend (meet at 135 degrees or less), the limb leaves into the outer corner
+// (within 60 degrees of the direction away from both), it is about as thick as the thinner
+// of them (a real limb off a thick body is thinner than the body), and its points reach no
+// farther from the junction than a mitred bend of that thinner tube would, with slack for
+// noise and for the junction lying inside the bend. Same arguments as isRedundantLimb.
+bool isCornerLimb(const SkeletonGraph& graph, const Limb& limb, const PointList& points,
+                  const std::vector<std::vector<int>>& nodePoints);
 
 // One short cycle per independent cycle: for every bone outside a spanning forest, the
 // bone plus the shortest path (by length) between its ends that avoids it.
