@@ -34,6 +34,18 @@ TEST(SkeletonStructure, AShortLimbInsideTheBodyIsASpurALongOneIsNot) {
     EXPECT_EQ(limbs, 1);
 }
 
+TEST(SkeletonStructure, AChainsDirectionIsReadOverItsFirstBones) {
+    SkeletonGraph g = straightChain();
+    const int bent = addNode(g, Point(0.2, 0.3, 0), 2);  // node 2 becomes a junction
+    const auto neighbours = adjacencyLists(g.nodeCount(), g.edges);
+    // From node 10 four bones back along the chain, which goes on past them.
+    EXPECT_TRUE(chainDirection(g, walkChain(neighbours, 10, 9), 4).isApprox(Point(-1, 0, 0)));
+    // From node 2 to the side node: the chain is one bone, shorter than asked.
+    EXPECT_TRUE(chainDirection(g, walkChain(neighbours, 2, bent), 4).isApprox(Point(0, 1, 0)));
+    // A chain that ends where it began has no direction.
+    EXPECT_TRUE(chainDirection(g, {3, 4, 3}, 4).isZero());
+}
+
 namespace {
 
 // Points on the wall of the chain's 0.2 tube (x from 0 to 1), each given its nearest node.
@@ -414,12 +426,12 @@ Bend bentTube(double turnDegrees) {
     bend.outerCorner = (Point(1, 0, 0) - onward).normalized();
     int last = bend.junction;
     for (int step = 1; step <= 8; ++step) last = addNode(g, at + kSpacing * step * onward, last);
+    bend.points = wallPoints(g);
     const Point side = onward.cross(Point(0, 0, 1));
-    for (int i = 0; i <= 100; ++i) {
+    for (int i = 0; i <= 80; ++i) {
         for (int a = 0; a < 24; ++a) {
             const double c = 0.2 * std::cos(2.0 * M_PI * a / 24.0), s = 0.2 * std::sin(2.0 * M_PI * a / 24.0);
-            bend.points.emplace_back(0.01 * i, c, s);
-            if (i <= 80) bend.points.push_back(at + 0.01 * i * onward + c * side + s * Point(0, 0, 1));
+            bend.points.push_back(at + 0.01 * i * onward + c * side + s * Point(0, 0, 1));
         }
     }
     for (int i = 1; i < 12; ++i) {

@@ -30,23 +30,13 @@ constexpr double kAheadCosine = 0.7;
 // view and a corner that leaves an elephant in two (docs/benchmarks.md).
 constexpr double kContinuedCosine = 0.5;
 
-// The unit direction from `node` along its chain through `next`, over up to kDirectionBones
-// bones (zero when they end where they began).
-Point chainDirection(const SkeletonGraph& skeleton, const std::vector<std::vector<int>>& neighbours, int node,
-                     int next) {
-    const std::vector<int> chain = walkChain(neighbours, node, next);
-    const Point along = skeleton.nodes[std::size_t(chain[std::min(kDirectionBones, chain.size() - 1)])] -
-                        skeleton.nodes[std::size_t(node)];
-    return along.norm() > 0.0 ? Point(along.normalized()) : Point(Point::Zero());
-}
-
 // Per bone of `node`, the outward direction of the limb that comes into `node` along it,
 // when the limb ends at `node`; zero when another of the node's bones goes on that way.
 std::vector<Point> endDirections(const SkeletonGraph& skeleton, const std::vector<std::vector<int>>& neighbours,
                                  int node) {
     std::vector<Point> along;
     for (const int next : neighbours[std::size_t(node)]) {
-        along.push_back(chainDirection(skeleton, neighbours, node, next));
+        along.push_back(chainDirection(skeleton, walkChain(neighbours, node, next), kDirectionBones));
     }
     std::vector<Point> outward;
     for (std::size_t back = 0; back < along.size(); ++back) {

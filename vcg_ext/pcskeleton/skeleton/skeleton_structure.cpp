@@ -197,6 +197,12 @@ std::vector<int> walkChain(const std::vector<std::vector<int>>& neighbours, int 
     }
 }
 
+Point chainDirection(const SkeletonGraph& graph, const std::vector<int>& chain, std::size_t bones) {
+    const Point along = graph.nodes[std::size_t(chain[std::min(bones, chain.size() - 1)])] -
+                        graph.nodes[std::size_t(chain.front())];
+    return along.norm() > 0.0 ? Point(along.normalized()) : Point(Point::Zero());
+}
+
 double pathLength(const SkeletonGraph& graph, const std::vector<int>& path) {
     double length = 0.0;
     for (std::size_t i = 1; i < path.size(); ++i) length += boneLength(graph, path[i - 1], path[i]);
@@ -428,8 +434,7 @@ Arm armFrom(const SkeletonGraph& graph, const std::vector<std::vector<int>>& nei
     const std::vector<int> chain = walkChain(neighbours, junction, next);
     const std::size_t last = std::min(kCornerArmBones, chain.size() - 1);
     Arm arm;
-    const Point along = graph.nodes[std::size_t(chain[last])] - graph.nodes[std::size_t(junction)];
-    if (along.norm() > 0.0) arm.direction = along.normalized();
+    arm.direction = chainDirection(graph, chain, kCornerArmBones);
     std::vector<double> radii;
     for (std::size_t i = 1; i <= last; ++i) radii.push_back(graph.radii[std::size_t(chain[i])]);
     arm.radius = median(std::move(radii));

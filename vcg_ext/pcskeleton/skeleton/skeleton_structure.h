@@ -31,6 +31,11 @@ std::vector<int> walkChain(const std::vector<std::vector<int>>& neighbours, int 
 // Total length of the bones along a node path.
 double pathLength(const SkeletonGraph& graph, const std::vector<int>& path);
 
+// The unit direction from a chain's first node (walkChain's `from`) to its node `bones`
+// bones along, or to its last node when it is shorter; zero when the two coincide. Over
+// several bones, as one bone zig-zags with the nodes' placement.
+Point chainDirection(const SkeletonGraph& graph, const std::vector<int>& chain, std::size_t bones);
+
 // From a tip along nodes of degree 2 to the first node of another degree (a junction, or
 // the other tip of an isolated chain), both ends included.
 struct Limb {
