@@ -42,7 +42,8 @@ RECONSTRUCTION_PARAMETERS = _pcskeleton.reconstruction_defaults()
 # CLI's options and the MeshLab dialogs say the same); common keywords first.
 _PAPER_HELP = {
     False: "the paper's pipeline exactly: no outlier detection, denoising, link limit, sheets' medial axes, "
-           "re-centring, refinement, gap bridging, tip extension or subsampling; every other keyword given "
+           "re-centring, refinement, gap bridging, tip extension or subsampling, and the paper's automatic k; "
+           "every other keyword given "
            "still applies on top "
            "(paper=True, refine=True is the paper plus refinement).",
     True: "the paper's plain fit with uniform point weights and the zero level set as it is; every other keyword "

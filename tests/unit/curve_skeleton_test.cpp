@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <string>
 #include <vector>
@@ -70,6 +71,23 @@ TEST(CurveSkeleton, SphereHasNoCycle) {
     const SkeletonTopology t = topologyOf(shapes::sphere(4000, 1.0));
     EXPECT_EQ(t.cycles, 0) << describe(t);
     EXPECT_EQ(t.components, 1) << describe(t);
+}
+
+// A flat square of 500 points, the sheets step off: the paper's k for so few is 8, and fans
+// from 8 neighbours contract the square into a web of false loops (docs/benchmarks.md,
+// "Sparse clouds"). The default k is 20 there.
+TEST(CurveSkeleton, ASparseFlatSquareContractsWithoutLoops) {
+    const shapes::Triangles square = shapes::sheet([](double u, double v) { return Point(u, v, 0); }, 1, 1);
+    SkeletonParameters defaultK, papersK;
+    defaultK.graph.collapseSheets = papersK.graph.collapseSheets = false;
+    papersK.contraction.papersNeighbourRule = true;
+    int loopsWithThePapersK = 0;
+    for (std::uint32_t seed : {1u, 2u, 3u}) {
+        const PointList cloud = shapes::sample(square, 500, seed);
+        EXPECT_EQ(topologyOf(cloud, defaultK).cycles, 0) << "seed " << seed;
+        loopsWithThePapersK += topologyOf(cloud, papersK).cycles;
+    }
+    EXPECT_GT(loopsWithThePapersK, 0) << "the case tells the two rules apart";
 }
 
 TEST(CurveSkeleton, YShapedTubeHasThreeTipsAndOneJunction) {

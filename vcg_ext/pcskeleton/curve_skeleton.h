@@ -79,9 +79,11 @@ struct SkeletonParameters {
 
     // Turns off every step that is not the paper's (outlier detection, denoising, the
     // stretched-link limit, the sheets' medial axes, re-centring, refinement, gap bridging,
-    // tip extension, the subsample), keeping every other setting.
+    // tip extension, the subsample) and takes its rule for an automatic k, keeping every
+    // other setting.
     void keepToThePaper() {
         resolution.maxContractedPoints = 0;
+        contraction.papersNeighbourRule = true;
         contraction.outliers.detect = false;
         contraction.denoisingPasses = 0;
         graph.collapseSheets = false;

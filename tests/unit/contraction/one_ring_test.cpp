@@ -23,10 +23,21 @@ bool inRing(const OneRings& rings, int i, int j) {
 
 }  // namespace
 
-TEST(OneRing, NeighbourCountFollowsThePapersRule) {
-    EXPECT_EQ(defaultNeighbourCount(100), 8);
-    EXPECT_EQ(defaultNeighbourCount(1000), 12);
-    EXPECT_EQ(defaultNeighbourCount(2000), 24);
+TEST(OneRing, PapersNeighbourCountIs1Point2PercentOfThePointsWithin8And30) {
+    EXPECT_EQ(paperNeighbourCount(100), 8);
+    EXPECT_EQ(paperNeighbourCount(1000), 12);
+    EXPECT_EQ(paperNeighbourCount(2000), 24);
+    EXPECT_EQ(paperNeighbourCount(100000), 30);
+}
+
+TEST(OneRing, DefaultNeighbourCountIsThePapersButAtLeastA30thOfThePointsUpTo20) {
+    EXPECT_EQ(defaultNeighbourCount(20), 8) << "a tiny cloud keeps the paper's least";
+    EXPECT_EQ(defaultNeighbourCount(231), 8);
+    EXPECT_EQ(defaultNeighbourCount(300), 10) << "a 30th of the points";
+    EXPECT_EQ(defaultNeighbourCount(500), 16) << "a 30th of the points";
+    EXPECT_EQ(defaultNeighbourCount(600), kFewestDefaultNeighbours);
+    EXPECT_EQ(defaultNeighbourCount(1000), kFewestDefaultNeighbours);
+    EXPECT_EQ(defaultNeighbourCount(2000), 24) << "the paper's rule where it gives more";
     EXPECT_EQ(defaultNeighbourCount(100000), 30);
 }
 

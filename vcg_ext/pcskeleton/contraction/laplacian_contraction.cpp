@@ -56,7 +56,8 @@ void checkContractionParameters(const ContractionParameters& p) {
 namespace {
 
 int chooseNeighbourCount(const ContractionParameters& p, std::size_t inputSize) {
-    return p.neighbourCount > 0 ? p.neighbourCount : defaultNeighbourCount(inputSize);
+    if (p.neighbourCount > 0) return p.neighbourCount;
+    return p.papersNeighbourRule ? paperNeighbourCount(inputSize) : defaultNeighbourCount(inputSize);
 }
 
 }  // namespace

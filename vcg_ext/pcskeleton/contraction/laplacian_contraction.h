@@ -32,7 +32,9 @@ class GramMatrix;
 // Defaults are the paper's (and its authors' reference code's). Lengths are measured
 // in the normalised frame of NormalizedCloud, so the defaults do not depend on units.
 struct ContractionParameters {
-    int neighbourCount = 0;                 // k; 0 = the paper's rule, clamp(0.012 n, 8, 30)
+    int neighbourCount = 0;                 // k; 0 = automatic: defaultNeighbourCount (one_ring.h)
+    bool papersNeighbourRule = false;       // automatic k by the paper's rule, which has fewer
+                                            // neighbours below 1667 points
     double initialContractionWeight = 0.0;  // W_L0; 0 = 1 / (5 S0), S0 = mean 1-ring extent
     double initialAttractionWeight = 1.0;   // W_H0
     double contractionScale = 3.0;          // s_L, W_L grows by this factor per iteration

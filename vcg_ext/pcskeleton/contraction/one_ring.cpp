@@ -145,9 +145,14 @@ private:
 
 }  // namespace
 
-int defaultNeighbourCount(std::size_t pointCount) {
-    long k = std::lround(0.012 * static_cast<double>(pointCount));
+int paperNeighbourCount(std::size_t pointCount) {
+    const long k = std::lround(0.012 * static_cast<double>(pointCount));
     return static_cast<int>(std::clamp<long>(k, 8, 30));
+}
+
+int defaultNeighbourCount(std::size_t pointCount) {
+    const long fewest = std::clamp<long>(long(pointCount / kPointsPerDefaultNeighbour), 8, kFewestDefaultNeighbours);
+    return std::max(paperNeighbourCount(pointCount), static_cast<int>(fewest));
 }
 
 OneRings OneRings::compute(const PointList& points, int k, const ProgressCallback& progress) {

@@ -15,7 +15,16 @@
 
 namespace pcskeleton {
 
-// The paper's rule: k = 0.012 n, restricted to [8, 30].
+// The paper's rule for k: 0.012 n, restricted to [8, 30].
+int paperNeighbourCount(std::size_t pointCount);
+// The default k: the paper's rule, but at least one neighbour per kPointsPerDefaultNeighbour
+// points, up to kFewestDefaultNeighbours (reached at 600 points). The paper's rule gives fewer
+// than 20 below 1667 points, a size its experiments did not have (it subsampled to about
+// 10K): there a plate's fans from so few neighbours contract it into a web of false loops,
+// and tubes lose loops and tips; on the sparsest clouds more neighbours reach across small
+// holes instead (docs/benchmarks.md, "Sparse clouds").
+inline constexpr int kFewestDefaultNeighbours = 20;
+inline constexpr std::size_t kPointsPerDefaultNeighbour = 30;
 int defaultNeighbourCount(std::size_t pointCount);
 
 class OneRings {

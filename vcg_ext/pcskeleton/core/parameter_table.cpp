@@ -20,8 +20,9 @@ const std::vector<ParameterInfo> kTable = {
     {Parameter::NeighbourCount, "k", V::Integer, S::Contraction, kCommon, kStraight,
      "k", "Neighbours k (0 = automatic)", "k",
      "Nearest neighbours whose tangent-plane Delaunay triangulation gives each point its 1-ring; 0 = automatic: "
-     "1.2% of the points, between 8 and 30 (the paper's rule). Raise it for noisy scans; lower it if close-by parts "
-     "(fingers, claws) get connected."},
+     "1.2% of the points, between 20 and 30 (below 600 points a 30th of them, at least 8); the paper's pipeline "
+     "takes the paper's rule, between 8 and 30. Raise it for noisy scans; lower it if close-by parts (fingers, claws) "
+     "get connected."},
     {Parameter::InitialContractionWeight, "wl", V::Real, S::Contraction, kCommon, kStraight,
      "the initial contraction weight W_L0", "Initial contraction weight W_L0 (0 = automatic)", "contractionWeight",
      "Strength of the Laplacian (shrinking) term in the first iteration; 0 = automatic: 1/(5 S0), S0 being the mean "
