@@ -1,7 +1,8 @@
 // Sheets onto their medial axes: a one-sided plate with two holes gives a loop around each
-// hole and no hub, also when a grazing scan samples it in bands; a disc one node at its
-// centre; tubes, a thick closed plate and a narrow leaf are left to contraction; the paper's
-// pipeline does without.
+// hole and no hub, also when a grazing scan samples it in bands or when it is sparse; a disc
+// one node at its centre; tubes, a thick closed plate and a narrow leaf are left to
+// contraction; the paper's pipeline does without.
+
 #include <pcskeleton/skeleton/sheet_collapse.h>
 #include <pcskeleton/curve_skeleton.h>
 #include "support/sampled_shapes.h"
@@ -129,4 +130,16 @@ TEST(SheetCollapse, ThePapersPipelineThinsTheContractedPointsAsTheyAre) {
     const SkeletonResult r = computeCurveSkeleton(plateWithTwoHoles(1), SkeletonParameters::paper());
     EXPECT_FALSE(r.quality.sheets);
     EXPECT_NE(describe(r.quality).find("Sheets: off."), std::string::npos);
+}
+
+// 600 points: a ball of two thinning radii holds about 10 of them, often fewer; the nearest
+// ten then judge the plane (docs/benchmarks.md, "Sparse clouds").
+TEST(SheetCollapse, ASparsePlateIsStillOnePatchWithItsTwoHoles) {
+    for (std::uint32_t seed : {1u, 2u, 3u}) {
+        const SkeletonResult r = computeCurveSkeleton(plateWithTwoHoles(seed, 600));
+        ASSERT_TRUE(r.quality.sheets);
+        EXPECT_EQ(r.quality.sheets->patches, 1) << "seed " << seed;
+        const SkeletonTopology t = analyseTopology(r.skeleton);
+        EXPECT_EQ(t.cycles, 2) << describe(t) << ", seed " << seed;
+    }
 }

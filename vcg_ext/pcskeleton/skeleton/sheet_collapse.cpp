@@ -75,6 +75,9 @@ Neighbourhoods sheetNeighbourhoods(const PointList& points, const PointIndex& in
         for (long rank = 0; rank < long(points.size()); ++rank) {
             const std::size_t i = order[std::size_t(rank)];
             index.withinRadius(points[i], kNeighbourhoodRadii * radius, found);
+            // A sparse cloud's ball may hold too few points to show a plane: then the nearest
+            // that many, a neighbourhood as wide as the sampling needs.
+            if (found.size() < kFewestNeighbours) index.nearest(points[i], int(kFewestNeighbours), found);
             if (found.size() < kFewestNeighbours) continue;
             const LocalPlane plane = fitLocalPlane(points, found);
             const Eigen::Vector3d& v = plane.variances;

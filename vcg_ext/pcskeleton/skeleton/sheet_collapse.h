@@ -8,6 +8,7 @@
 // a curve of them as of a contracted tube. Not in the paper (docs/benchmarks.md).
 //
 // 1. A point lies on a sheet when its neighbours within kNeighbourhoodRadii thinning radii
+//    (on a sparse cloud, where they are fewer than kFewestNeighbours, its nearest that many)
 //    spread in two directions and hardly in the third (their principal variances).
 // 2. Sheet points joined by 1-rings whose planes face the same way form one patch. A patch is
 //    collapsed when it is wide (kWidePatchRadii both ways), when contraction left it as wide
