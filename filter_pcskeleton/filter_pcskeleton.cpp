@@ -231,7 +231,7 @@ QString FilterPCSkeletonPlugin::description(int filter) const {
                 "paper's, plus two steps it does not have: outliers are set aside and a noisy cloud is contracted "
                 "through a denoised copy (untick 'Detect outliers' and set 'Denoising passes' to 0 for the paper's "
                 "contraction exactly; on a cloud of fewer than 1667 points, also set k to 1.2% of its points, at "
-                "least 8: the automatic k is more than the paper's there).") + kPaperReference;
+                "least 8: the automatic k may be more than the paper's there).") + kPaperReference;
         case FP_COMPUTE_SKELETON:
             // Short: with every field of MeshLab 2020.09's dialog it must fit a 1024-pixel screen.
             return QString(
