@@ -62,9 +62,12 @@ constexpr double kSpurRadii = 2.0;
 
 struct Neighbourhoods {
     std::vector<char> sheet;    // per point
-    std::vector<Point> normal;  // per point; zero where too few neighbours
+    std::vector<Point> normal;  // per point
 };
 
+// `points` holds at least kFewestPatchPoints (collapseSheets returns earlier), so the nearest
+// kFewestNeighbours always exist.
+static_assert(kFewestPatchPoints >= kFewestNeighbours);
 Neighbourhoods sheetNeighbourhoods(const PointList& points, const PointIndex& index, double radius) {
     Neighbourhoods n{std::vector<char>(points.size(), 0), std::vector<Point>(points.size(), Point::Zero())};
     const std::vector<std::size_t>& order = index.spatialOrder();  // consecutive queries share the tree's nodes
@@ -78,7 +81,6 @@ Neighbourhoods sheetNeighbourhoods(const PointList& points, const PointIndex& in
             // A sparse cloud's ball may hold too few points to show a plane: then the nearest
             // that many, a neighbourhood as wide as the sampling needs.
             if (found.size() < kFewestNeighbours) index.nearest(points[i], int(kFewestNeighbours), found);
-            if (found.size() < kFewestNeighbours) continue;
             const LocalPlane plane = fitLocalPlane(points, found);
             const Eigen::Vector3d& v = plane.variances;
             n.sheet[i] = v(1) >= kSpread * v(2) && v(0) <= kFlat * v(1);
