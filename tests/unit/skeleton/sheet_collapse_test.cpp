@@ -2,7 +2,6 @@
 // hole and no hub, also when a grazing scan samples it in bands or when it is sparse; a disc
 // one node at its centre; tubes, a thick closed plate and a narrow leaf are left to
 // contraction; the paper's pipeline does without.
-
 #include <pcskeleton/skeleton/sheet_collapse.h>
 #include <pcskeleton/curve_skeleton.h>
 #include "support/sampled_shapes.h"
