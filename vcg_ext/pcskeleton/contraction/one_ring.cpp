@@ -1,5 +1,6 @@
 #include "pcskeleton/contraction/one_ring.h"
 
+#include "pcskeleton/contraction/facing_walls.h"
 #include "pcskeleton/internal/spatial_index.h"
 
 #include <CGAL/Convex_hull_traits_adapter_2.h>
@@ -40,7 +41,11 @@ struct LocalFan {
 // Everything one thread needs to build fans, reused from point to point.
 class FanBuilder {
 public:
-    FanBuilder(const PointList& points, const PointIndex& index, int k) : points_(points), index_(index), k_(k) {}
+    // `outward`: the points' outward normals (facing_walls.h), or null to keep every neighbour.
+    FanBuilder(const PointList& points, const PointIndex& index, int k, const PointList* outward)
+        : points_(points), index_(index), k_(k), outward_(outward) {}
+
+    std::size_t facingLeftOut() const { return facingLeftOut_; }
 
     void build(int i, LocalFan& fan) {
         fan.triangles.clear();
@@ -57,6 +62,15 @@ private:
         // k + 1 because the query point finds itself.
         index_.nearest(points_[i], k_ + 1, neighbours_);
         neighbours_.erase(std::remove(neighbours_.begin(), neighbours_.end(), i), neighbours_.end());
+        if (outward_) leaveOutFacingWalls(i);
+    }
+
+    void leaveOutFacingWalls(int i) {
+        const PointList& out = *outward_;
+        const auto onFacing = [&](int j) { return onFacingWall(points_[i], out[i], points_[j], out[j]); };
+        const auto kept = std::remove_if(neighbours_.begin(), neighbours_.end(), onFacing);
+        facingLeftOut_ += std::size_t(neighbours_.end() - kept);
+        neighbours_.erase(kept, neighbours_.end());
     }
 
     void projectOnTangentPlane(int i) {
@@ -136,6 +150,8 @@ private:
     const PointList& points_;
     const PointIndex& index_;
     int k_;
+    const PointList* outward_;
+    std::size_t facingLeftOut_ = 0;
     std::vector<int> neighbours_;
     std::vector<std::pair<Point2, int>> projected_;
     std::vector<Point2> inverted_;
@@ -155,13 +171,14 @@ int defaultNeighbourCount(std::size_t pointCount) {
     return std::max(paperNeighbourCount(pointCount), static_cast<int>(fewest));
 }
 
-OneRings OneRings::compute(const PointList& points, int k, const ProgressCallback& progress) {
+OneRings OneRings::compute(const PointList& points, int k, FacingWalls facingWalls, const ProgressCallback& progress) {
     const std::size_t n = points.size();
     OneRings rings;
     rings.k_ = std::min<int>(k, static_cast<int>(n) - 1);
 
     const PointIndex index(points);
     report(progress, 10, "Neighbourhoods: k-d tree built");
+    const PointList outward = facingWalls == FacingWalls::LeaveOut ? outwardNormals(points, index) : PointList();
 
     // Each thread handles a contiguous block of points, so concatenating the threads'
     // outputs in order gives the fans in point order.
@@ -181,7 +198,7 @@ OneRings OneRings::compute(const PointList& points, int k, const ProgressCallbac
             blockRings.resize(threads);
         }
         const std::size_t begin = n * thread / threads, end = n * (thread + 1) / threads;
-        FanBuilder builder(points, index, rings.k_);
+        FanBuilder builder(points, index, rings.k_, outward.empty() ? nullptr : &outward);
         LocalFan fan;
         for (std::size_t i = begin; i < end; ++i) {
             builder.build(static_cast<int>(i), fan);
@@ -194,6 +211,8 @@ OneRings OneRings::compute(const PointList& points, int k, const ProgressCallbac
                        "Neighbourhoods: tangent-plane Delaunay 1-rings");
             }
         }
+#pragma omp atomic
+        rings.facingLeftOut_ += builder.facingLeftOut();
     }
 
     rings.fanOffsets_.assign(n + 1, 0);

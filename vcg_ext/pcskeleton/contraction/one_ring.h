@@ -3,7 +3,8 @@
 // For point i: its k nearest neighbours are projected onto their PCA tangent plane, and
 // the triangles around i in the 2-D Delaunay triangulation of i and its neighbours (its
 // "fan") define i's 1-ring. The fan is kept fixed while the points move; only the
-// Laplacian weights change.
+// Laplacian weights change. Not in the paper: neighbours on another part's wall facing
+// i's own across a gap can be left out first (facing_walls.h).
 #pragma once
 
 #include "pcskeleton/contraction/point_cloud_input.h"
@@ -27,6 +28,9 @@ inline constexpr int kFewestDefaultNeighbours = 20;
 inline constexpr std::size_t kPointsPerDefaultNeighbour = 30;
 int defaultNeighbourCount(std::size_t pointCount);
 
+// Whether the 1-rings leave out neighbours on a wall facing the point's own (facing_walls.h).
+enum class FacingWalls { Keep, LeaveOut };
+
 class OneRings {
 public:
     // Triangle (i, a, b) of i's fan is stored as {a, b}, counter-clockwise around i in the
@@ -44,11 +48,16 @@ public:
     std::size_t ringSize(std::size_t i) const { return ringOffsets_[i + 1] - ringOffsets_[i]; }
     std::size_t totalRingEntries() const { return ring_.size(); }
 
+    // Of the k nearest neighbours of all points, how many were left out as on a facing wall.
+    std::size_t facingNeighboursLeftOut() const { return facingLeftOut_; }
+
     // Builds the rings of `points` (no exact duplicates allowed) with k neighbours.
-    static OneRings compute(const PointList& points, int k, const ProgressCallback& progress = {});
+    static OneRings compute(const PointList& points, int k, FacingWalls facingWalls = FacingWalls::Keep,
+                            const ProgressCallback& progress = {});
 
 private:
     int k_ = 0;
+    std::size_t facingLeftOut_ = 0;
     std::vector<std::size_t> fanOffsets_, ringOffsets_;
     std::vector<FanTriangle> fanTriangles_;
     std::vector<int> ring_;
