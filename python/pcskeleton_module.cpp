@@ -513,6 +513,8 @@ py::dict reportDict(const SkeletonResult& r) {
     d["outliers"] = q.outliers + q.inputOutliers;
     d["denoising_passes"] = contraction.denoisingPasses;
     d["sheet_patches"] = q.sheets ? q.sheets->patches : 0;  // flat patches moved onto their medial axes
+    // 1-ring neighbours across a gap left out (facing_walls.h); -1 when the facing walls are not separated
+    d["facing_neighbours_left_out"] = contraction.facingNeighboursLeftOut;
     py::list warnings;
     for (const QualityWarning& w : q.warnings()) {
         py::dict warning = problemDict(w.problem);

@@ -2,7 +2,7 @@
 
 After "Point Cloud Skeletons via Laplacian-Based Contraction" (Cao, Tagliasacchi, Olson,
 Zhang, Su; SMI 2010), with the steps this project added for imperfect scans (outlier
-detection, denoising, sheets' medial axes, re-centring, refinement, tip extension, gap
+detection, denoising, facing walls kept apart, sheets' medial axes, re-centring, refinement, tip extension, gap
 bridging) on by default and ``paper=True`` for the paper's pipeline exactly. The same library as the ``pcskeleton``
 command-line tool and the MeshLab plugins.
 
@@ -41,7 +41,8 @@ RECONSTRUCTION_PARAMETERS = _pcskeleton.reconstruction_defaults()
 # What each keyword does and which way to turn it, from the library's parameter table (the
 # CLI's options and the MeshLab dialogs say the same); common keywords first.
 _PAPER_HELP = {
-    False: "the paper's pipeline exactly: no outlier detection, denoising, link limit, sheets' medial axes, "
+    False: "the paper's pipeline exactly: no outlier detection, denoising, facing walls, link limit, sheets' "
+           "medial axes, "
            "re-centring, refinement, gap bridging, tip extension or subsampling, and the paper's automatic k; "
            "every other keyword given "
            "still applies on top "

@@ -77,6 +77,16 @@ def test_a_plate_gets_a_loop_around_each_hole_and_sheets_false_keeps_the_papers_
     assert torus_skeleton.report["sheet_patches"] == 0
 
 
+def test_facing_walls_are_counted_and_facing_walls_false_keeps_every_neighbour(torus_points):
+    s = pcskeleton.skeletonize(torus_points)
+    assert s.report["facing_neighbours_left_out"] >= 0
+    assert "Facing walls: " in s.report["text"]
+    off = pcskeleton.skeletonize(torus_points, facing_walls=False)
+    assert off.report["facing_neighbours_left_out"] == -1
+    assert "Facing walls: off." in off.report["text"]
+    assert off.report["topology"]["cycles"] == 1
+
+
 def test_noisy_y_keeps_three_tips():
     points = shapes.y_shape() + np.random.default_rng(3).normal(0, 0.005, (4500, 3))
     assert pcskeleton.skeletonize(points).report["topology"]["tips"] == 3

@@ -39,6 +39,11 @@ grep -q "^Sheets: none wide and flat enough to be moved onto their medial axes.$
 "$PCSKELETON" $M/knot.off -o knot_no_sheets.ply --no-sheets --report knot_no_sheets.txt --quiet
 grep -q "^Sheets: off.$" knot_no_sheets.txt || { cat knot_no_sheets.txt; fail "--no-sheets: the report does not say so"; }
 cmp -s knot.ply knot_no_sheets.ply || fail "--no-sheets changed the skeleton of the knot, which has no sheet"
+# --no-facing-walls: the report says so; by default it counts the neighbours left out.
+grep -q "^Facing walls: [0-9]* neighbours\? across a gap left out of the 1-rings" knot.log \
+  || { cat knot.log; fail "the report does not count the facing walls' neighbours"; }
+"$PCSKELETON" $M/knot.off -o knot_facing.ply --no-facing-walls --report knot_facing.txt --quiet
+grep -q "^Facing walls: off.$" knot_facing.txt || { cat knot_facing.txt; fail "--no-facing-walls: the report does not say so"; }
 grep -q "^Tip extension: [0-9]* limbs extended" elephant.log || { cat elephant.log; fail "the elephant's limbs were not extended"; }
 
 # --report writes the same report to a file; an unconverged run warns and names the fix.
@@ -201,7 +206,7 @@ expected_version="$(sed -n 's/^project(pcskeleton VERSION \([0-9.]*\) .*/\1/p' "
 # --help documents every option with its default.
 "$PCSKELETON" --help >help.txt
 for option in --contracted --correspondence --k --wl --wh --sl --max-wl --max-wh --row-limit --iterations \
-              --threshold --radius --link-limit --gap-limit --loop-opening --loop-clearance --min-hole --uniform-point-weights --level-set --no-extend-tips --refine --no-refine --no-sheets --no-recentre --keep-outliers --outlier-isolation \
+              --threshold --radius --link-limit --gap-limit --loop-opening --loop-clearance --min-hole --uniform-point-weights --level-set --no-extend-tips --refine --no-refine --no-sheets --no-facing-walls --no-recentre --keep-outliers --outlier-isolation \
               --outlier-local --outlier-cluster --denoise --contracted-points --full-resolution --memory-limit \
               --paper --report --force --quiet; do
   grep -q -- "$option" help.txt || fail "--help does not document $option"
@@ -224,6 +229,7 @@ explains "--loop-clearance X" "within which that bone must pass a point" "is los
 explains "--refine, --no-refine" "Clean what noise leaves" "[on"
 explains "--sheets, --no-sheets" "onto its medial axis within its plane" "[on"
 explains "--keep-outliers, --no-keep-outliers" "Contract every point" "[off"
+explains "--facing-walls, --no-facing-walls" "on another part's wall that faces its own across a gap" "[on"
 
 # --paper means one thing: the paper's pipeline first, then every other option, in any order.
 "$PCSKELETON" $M/knot.off -o refine_paper.ply --refine --paper --quiet --force

@@ -296,16 +296,17 @@ TEST(CurveSkeleton, SamplingRadiusMustBeAFraction) {
 PointList savedScan(const std::string& file) { return readPointCloud(std::string(PCSKELETON_SCANS_DIR) + "/" + file); }
 
 // A saved scan of bench_robustness's libcgal-demo knot (one loop) whose false loops
-// refinement cuts as `bridges` stray bridges: one loop, no tip, one part; without
-// refinement, `unrefinedCycles`.
-void expectTheKnotsOneLoop(const std::string& file, int bridges, int loopsOverData, int unrefinedCycles) {
+// refinement cuts as `bridges` stray bridges and `loopsOverData` loops over data: one loop,
+// no tip, one part; without refinement, `unrefinedCycles`. `parameters`: the rest.
+void expectTheKnotsOneLoop(const std::string& file, int bridges, int loopsOverData, int unrefinedCycles,
+                           const SkeletonParameters& parameters = {}) {
     const PointList scan = savedScan(file);
-    const SkeletonQuality q = computeCurveSkeleton(scan).quality;
+    const SkeletonQuality q = computeCurveSkeleton(scan, parameters).quality;
     ASSERT_TRUE(q.refinement);
     EXPECT_EQ(q.refinement->bridgesCut, bridges) << describe(*q.refinement);
     EXPECT_EQ(q.refinement->filledLoopsCut, loopsOverData) << describe(*q.refinement);
     EXPECT_TRUE(q.topology.cycles == 1 && q.topology.tips == 0 && q.topology.components == 1) << describe(q.topology);
-    SkeletonParameters unrefined;
+    SkeletonParameters unrefined = parameters;
     unrefined.graph.refine = false;
     EXPECT_EQ(computeCurveSkeleton(scan, unrefined).quality.topology.cycles, unrefinedCycles);
 }
@@ -314,13 +315,16 @@ void expectTheKnotsOneLoop(const std::string& file, int bridges, int loopsOverDa
 // into the gap between them and made a node that joined the strands, a second loop.
 TEST(CurveSkeleton, AKnotWithLittleNoiseKeepsItsOneLoop) { expectTheKnotsOneLoop("knot_noise05_6000.ply", 1, 0, 2); }
 
-// With half its points in 10% of the surface: at the crossings, thinning joined the strands
-// by bones across the gaps between them (three false loops). One is opened as a narrow
-// loop; that leaves part of a strand on no loop, across the two others (partAcrossLoop),
-// which are opened as loops over data at those bones (before that test, the same bones were
-// cut as bones across gaps: the same skeleton).
+// With half its points in 10% of the surface: at the crossings the strands' 1-rings reach
+// across the gaps between them. With the facing walls kept apart no false loop forms. With
+// them in the 1-rings, thinning joins the strands by bones across the gaps (three false
+// loops): one is opened as a narrow loop; that leaves part of a strand on no loop, across
+// the two others (partAcrossLoop), which are opened as loops over data at those bones.
 TEST(CurveSkeleton, AKnotSampledUnevenlyKeepsItsOneLoop) {
-    expectTheKnotsOneLoop("knot_half_in_10_6000.ply", 0, 2, 4);
+    expectTheKnotsOneLoop("knot_half_in_10_6000.ply", 0, 0, 1);
+    SkeletonParameters facingWallsTogether;
+    facingWallsTogether.contraction.separateFacingWalls = false;
+    expectTheKnotsOneLoop("knot_half_in_10_6000.ply", 0, 2, 4, facingWallsTogether);
 }
 
 // bench_robustness's figure eight (two holes) with 5% outliers: outliers near the junctions
@@ -348,6 +352,27 @@ TEST(CurveSkeleton, AFigureEightWithOutliersKeepsItsTwoHolesOnly) {
                             [](const QualityWarning& w) { return w.kind == QualityWarning::Kind::FilledLoops; }))
         << describe(raw);
     EXPECT_TRUE(q.filledLoops.empty()) << "refinement opened it: no warning";
+}
+
+// bench_robustness's figure with its arms close to its body (0.06 from it, the legs 0.06
+// apart), clean: a point's 30 nearest reach across both gaps. With those neighbours in
+// the 1-rings the body's pull drags the arms into it, and the skeleton joins each arm's ends
+// to the middle of the body; with the facing walls kept apart each arm has its own bone
+// from the shoulder down: the five ends.
+TEST(CurveSkeleton, ArmsBesideTheBodyKeepTheirOwnBones) {
+    const PointList scan = savedScan("figure_clean_4984.ply");
+    const SkeletonResult r = computeCurveSkeleton(scan);
+    EXPECT_TRUE(r.quality.topology.tips == 5 && r.quality.topology.cycles == 0 && r.quality.topology.components == 1)
+        << describe(r.quality.topology);
+    ASSERT_TRUE(r.quality.contraction);
+    EXPECT_GT(r.quality.contraction->facingNeighboursLeftOut, 0);
+
+    SkeletonParameters together;
+    together.contraction.separateFacingWalls = false;
+    const SkeletonQuality q = computeCurveSkeleton(scan, together).quality;
+    EXPECT_GT(q.topology.tips, 5) << describe(q.topology);
+    EXPECT_EQ(q.contraction->facingNeighboursLeftOut, -1);
+    EXPECT_NE(describe(q).find("Facing walls: off."), std::string::npos);
 }
 
 // bench_robustness's figure with its arms close to its body, seen once from the side, and

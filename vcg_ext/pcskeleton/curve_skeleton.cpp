@@ -307,6 +307,7 @@ SkeletonResult skeletonFromContractedPoints(const PointList& input, const PointL
     SkeletonResult result;
     result.contraction.denoisingPasses = start.denoising.passes;
     result.contraction.surfaceNoise = start.denoising.surfaceNoise;
+    result.contraction.facingNeighboursLeftOut = facingNeighboursLeftOut(contraction, start.rings);
     result.seconds.neighbourhoods = start.neighbourhoodSeconds;
 
     rejectNonFinite(contracted, "contracted points", Remedy::take(Step::ContractAgain));

@@ -77,8 +77,8 @@ struct SkeletonParameters {
     SkeletonGraphParameters graph;
     ResolutionParameters resolution;
 
-    // Turns off every step that is not the paper's (outlier detection, denoising, the
-    // stretched-link limit, the sheets' medial axes, re-centring, refinement, gap bridging,
+    // Turns off every step that is not the paper's (outlier detection, denoising, the facing
+    // walls, the stretched-link limit, the sheets' medial axes, re-centring, refinement, gap bridging,
     // tip extension, the subsample) and takes its rule for an automatic k, keeping every
     // other setting.
     void keepToThePaper() {
@@ -86,6 +86,7 @@ struct SkeletonParameters {
         contraction.papersNeighbourRule = true;
         contraction.outliers.detect = false;
         contraction.denoisingPasses = 0;
+        contraction.separateFacingWalls = false;
         graph.collapseSheets = false;
         graph.recentre = false;
         graph.refine = false;

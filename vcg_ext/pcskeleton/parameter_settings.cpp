@@ -33,6 +33,7 @@ void visitField(Settings& s, Parameter id, Field&& visit) {
         case Parameter::OutlierLocalFactor: return visit(c.outliers.localFactor);
         case Parameter::OutlierClusterShare: return visit(c.outliers.clusterShare);
         case Parameter::DenoisingPasses: return visit(c.denoisingPasses);
+        case Parameter::FacingWalls: return visit(c.separateFacingWalls);
         case Parameter::ContractedPoints: return visit(s.skeleton.resolution.maxContractedPoints);
         case Parameter::FullResolution: return visit(s.skeleton.resolution.maxContractedPoints);
         case Parameter::MemoryLimit: return visit(s.skeleton.resolution.memoryLimit);

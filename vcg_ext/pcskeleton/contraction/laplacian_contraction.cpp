@@ -62,6 +62,10 @@ int chooseNeighbourCount(const ContractionParameters& p, std::size_t inputSize) 
 
 }  // namespace
 
+long facingNeighboursLeftOut(const ContractionParameters& parameters, const OneRings& rings) {
+    return parameters.separateFacingWalls ? long(rings.facingNeighboursLeftOut()) : -1;
+}
+
 std::string describe(StopReason reason) {
     switch (reason) {
         case StopReason::NotStopped: return "not finished";
@@ -80,7 +84,8 @@ ContractionStart prepareContraction(const PointList& input, const ContractionPar
     const Stopwatch stopwatch;
     start.denoising = chooseDenoising(start.cloud.points, k, parameters.denoisingPasses);
     start.positions = denoisedCopy(start.cloud.points, k, start.denoising.passes);
-    start.rings = OneRings::compute(start.positions, k, progress);
+    start.rings = OneRings::compute(
+        start.positions, k, parameters.separateFacingWalls ? FacingWalls::LeaveOut : FacingWalls::Keep, progress);
     start.neighbourhoodSeconds = stopwatch.seconds();
     return start;
 }
@@ -213,6 +218,7 @@ ContractionOutcome ContractionResult::outcome() const {
     outcome.extentRatio = iterations.empty() ? 1.0 : iterations.back().extentRatio;
     outcome.denoisingPasses = denoisingPasses;
     outcome.surfaceNoise = surfaceNoise;
+    outcome.facingNeighboursLeftOut = facingNeighboursLeftOut;
     return outcome;
 }
 
@@ -226,6 +232,7 @@ ContractionResult LaplacianContraction::result() const {
     result.neighbourhoodSeconds = neighbourhoodSeconds_;
     result.denoisingPasses = denoising_.passes;
     result.surfaceNoise = denoising_.surfaceNoise;
+    result.facingNeighboursLeftOut = facingNeighboursLeftOut(parameters_, rings_);
     return result;
 }
 

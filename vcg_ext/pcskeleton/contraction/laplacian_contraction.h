@@ -46,6 +46,8 @@ struct ContractionParameters {
     OutlierParameters outliers;             // points set aside before the 1-rings (not the paper's)
     int denoisingPasses = -1;               // contract a denoised copy (point_denoising.h): -1 = only
                                             // noisy clouds, 0 = never (the paper's), 1..10 passes
+    bool separateFacingWalls = true;        // 1-rings leave out neighbours on a wall facing the
+                                            // point's own (facing_walls.h); off in the paper
     LinearSolver solver = LinearSolver::Automatic;  // no BLAS up to 20K points: the same on every CPU
 };
 
@@ -75,6 +77,7 @@ struct ContractionOutcome {
     double extentRatio = 1.0;  // mean 1-ring size at the end, relative to the start
     int denoisingPasses = 0;   // of the copy whose 1-rings were contracted (point_denoising.h)
     double surfaceNoise = -1;  // measured for the automatic choice, else -1
+    long facingNeighboursLeftOut = -1;  // of the 1-rings (facing_walls.h); -1 when not separated
 };
 
 struct ContractionResult {
@@ -86,6 +89,7 @@ struct ContractionResult {
     double neighbourhoodSeconds = 0.0;
     int denoisingPasses = 0;
     double surfaceNoise = -1;  // measured for the automatic choice, else -1
+    long facingNeighboursLeftOut = -1;  // of the 1-rings (facing_walls.h); -1 when not separated
 
     ContractionOutcome outcome() const;
 };
@@ -93,7 +97,8 @@ struct ContractionResult {
 // What the contraction starts from: the normalised cloud (outliers set aside), the
 // denoising chosen for it, the starting positions (the denoised copy) and their 1-rings.
 // Thinning saved contracted points must rebuild exactly this, hence one function for both.
-// Of the parameters only k, the outlier parameters and the denoising passes are used.
+// Of the parameters only k, the outlier parameters, the denoising passes and the facing
+// walls are used.
 struct ContractionStart {
     NormalizedCloud cloud;
     DenoisingChoice denoising;
@@ -103,6 +108,8 @@ struct ContractionStart {
 };
 ContractionStart prepareContraction(const PointList& input, const ContractionParameters& parameters,
                                     const ProgressCallback& progress = {});
+// What the reports say of the facing walls: the neighbours left out, or -1 when not separated.
+long facingNeighboursLeftOut(const ContractionParameters& parameters, const OneRings& rings);
 
 class LaplacianContraction {
 public:

@@ -28,6 +28,7 @@ enum class Parameter {
     OutlierLocalFactor,
     OutlierClusterShare,
     DenoisingPasses,
+    FacingWalls,
     ContractedPoints,
     FullResolution,
     MemoryLimit,

@@ -66,6 +66,12 @@ const std::vector<ParameterInfo> kTable = {
      "nearest neighbours (the nodes and radii still come from the points as given): -1 = automatic, a few passes "
      "if the cloud is noisy (its surface noise is in the report), none if it is clean; 0 = never (the paper's); "
      "a positive number: that many passes always."},
+    {Parameter::FacingWalls, "facing_walls", V::Switch, S::PointCleaning, kAdvanced, kStraight,
+     "the facing walls", "Keep facing walls apart", kNotInTheDialogs,
+     "Leave out of each point's 1-ring the neighbours on another part's wall that faces its own across a gap (an "
+     "arm beside a body, two legs side by side), so that contraction does not pull the parts into one; which side "
+     "is out comes from each point's surface curvature, and where noise hides it the point keeps every neighbour. "
+     "Off: every one of the k nearest may join the 1-ring (the paper's)."},
     {Parameter::OutlierIsolation, "outlier_isolation", V::Real, S::PointCleaning, kAdvanced, kStraight,
      "the outlier isolation factor", "Outlier isolation (spacings)", kNotInTheDialogs,
      "A point whose 8th nearest neighbour is farther than this many typical spacings is an outlier; raise it if "

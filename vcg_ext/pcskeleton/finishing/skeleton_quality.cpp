@@ -234,6 +234,12 @@ std::string describeFindings(const SkeletonQuality& q) {
           << (contraction.denoisingPasses > 0 ? ", a noisy cloud)" : ", a clean cloud)");
     }
     s << ".\n";
+    if (q.contraction) {
+        s << "Facing walls: ";
+        if (contraction.facingNeighboursLeftOut < 0) s << "off.\n";
+        else s << counted(std::size_t(contraction.facingNeighboursLeftOut), "neighbour", "neighbours")
+               << " across a gap left out of the 1-rings (on another part's wall, facing the point's own).\n";
+    }
     if (q.inputPoints > q.points) {
         s << "Input: " << counted(q.inputPoints, "point", "points") << ", " << counted(q.inputOutliers, "outlier", "outliers")
           << " set aside (no node); multi-resolution: " << q.points << " contracted";
