@@ -245,16 +245,15 @@ int outlierDetection(const std::vector<Subject>& subjects, std::size_t n, std::u
     return 0;
 }
 
-// A third or two thirds of a scan's points, drawn with `seed` (a Fisher-Yates shuffle on the
-// generator's own output, the same on every platform).
-PointList drawnShare(const PointList& cloud, std::size_t thirds, std::uint32_t seed) {
-    std::vector<std::size_t> order(cloud.size());
+// The indices 0..n-1 shuffled with `seed` (Fisher-Yates on the generator's own output, the
+// same on every platform); a prefix of it is a random sample, and a shorter prefix a
+// sample of the longer one.
+std::vector<std::size_t> shuffledOrder(std::size_t n, std::uint32_t seed) {
+    std::vector<std::size_t> order(n);
     std::iota(order.begin(), order.end(), std::size_t(0));
     std::mt19937 random(seed);
     for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[random() % i]);
-    PointList share;
-    for (std::size_t k = 0; k < cloud.size() * thirds / 3; ++k) share.push_back(cloud[order[k]]);
-    return share;
+    return order;
 }
 
 // The paper's scans without ground truth: each file found in `folder` as NAME.ply or NAME.off,
@@ -282,8 +281,14 @@ int measurePaperScans(const std::string& folder, const SkeletonParameters& pipel
         const PointList whole = readPointCloud(file.string());
         const PointIndex index(whole);
         const double diagonal = boundingBox(whole).diagonal().norm();
+        const std::vector<std::size_t> order = shuffledOrder(whole.size(), seed);
         for (std::size_t thirds : {3, 1, 2}) {
-            const PointList cloud = thirds == 3 ? whole : drawnShare(whole, thirds, seed);
+            PointList cloud;
+            if (thirds == 3) {
+                cloud = whole;  // in the file's order: the skeleton depends on the points' order
+            } else {
+                for (std::size_t k = 0; k < whole.size() * thirds / 3; ++k) cloud.push_back(whole[order[k]]);
+            }
             const auto start = std::chrono::steady_clock::now();
             const SkeletonResult result = computeCurveSkeleton(cloud, pipeline);
             const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
