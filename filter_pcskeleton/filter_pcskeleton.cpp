@@ -355,9 +355,8 @@ void FilterPCSkeletonPlugin::addParameters(int filter, MeshDocument& md, RichPar
                 "(Skeleton from Contracted Points)."));
             parameters.addParam(RichBool("paperPipeline", false, "The paper's pipeline, then my changes",
                 "The paper's steps only: no outlier detection, denoising, facing walls kept apart, sheets' medial "
-                "axes, re-centring, "
-                "refinement, tip extension, "
-                "gap bridging, stretched-link limit or subsample; then every field changed from its default "
+                "axes, re-centring, refinement, tip extension, gap bridging, stretched-link limit or subsample; "
+                "then every field changed from its default "
                 "applies on top (tick Refine too for the paper plus refinement). For comparison with the paper "
                 "and other implementations of it."));
             addParameterFields(parameters, kSkeletonStages, true);

@@ -2,9 +2,9 @@
 
 After "Point Cloud Skeletons via Laplacian-Based Contraction" (Cao, Tagliasacchi, Olson,
 Zhang, Su; SMI 2010), with the steps this project added for imperfect scans (outlier
-detection, denoising, facing walls kept apart, sheets' medial axes, re-centring, refinement, tip extension, gap
-bridging) on by default and ``paper=True`` for the paper's pipeline exactly. The same library as the ``pcskeleton``
-command-line tool and the MeshLab plugins.
+detection, denoising, facing walls kept apart, sheets' medial axes, re-centring, refinement,
+tip extension, gap bridging) on by default and ``paper=True`` for the paper's pipeline
+exactly. The same library as the ``pcskeleton`` command-line tool and the MeshLab plugins.
 
     >>> import pcskeleton
     >>> points = pcskeleton.read_points("scan.ply")            # (n, 3) float64
@@ -42,11 +42,9 @@ RECONSTRUCTION_PARAMETERS = _pcskeleton.reconstruction_defaults()
 # CLI's options and the MeshLab dialogs say the same); common keywords first.
 _PAPER_HELP = {
     False: "the paper's pipeline exactly: no outlier detection, denoising, facing walls, link limit, sheets' "
-           "medial axes, "
-           "re-centring, refinement, gap bridging, tip extension or subsampling, and the paper's automatic k; "
-           "every other keyword given "
-           "still applies on top "
-           "(paper=True, refine=True is the paper plus refinement).",
+           "medial axes, re-centring, refinement, gap bridging, tip extension or subsampling, and the paper's "
+           "automatic k; every other keyword given still applies on top (paper=True, refine=True is the paper "
+           "plus refinement).",
     True: "the paper's plain fit with uniform point weights and the zero level set as it is; every other keyword "
           "given still applies on top.",
 }
