@@ -8,6 +8,8 @@
 
 #include <cmath>
 #include <limits>
+#include <numeric>
+#include <random>
 
 using namespace pcskeleton;
 
@@ -71,6 +73,32 @@ TEST(ExactDuplicates, GroupsAreNumberedByFirstAppearance) {
     EXPECT_EQ(d.groupOf, (std::vector<int>{0, 1, 0, 2, 1}));
     EXPECT_EQ(d.firstOf, (std::vector<int>{0, 1, 3}));
     EXPECT_FALSE(findExactDuplicates({Point(0, 0, 0), Point(1, 0, 0)}).any());
+}
+
+// The order in which a file lists its points is no property of the shape: the cloud the
+// algorithm works on puts the points in an order their positions alone fix, so a
+// permutation of the input (with duplicates and an outlier) gives the same cloud, and each
+// input point still finds its own position.
+TEST(NormalizedCloud, ThePointsOrderDependsOnTheirPositionsOnly) {
+    PointList points = shapes::torus(3000, 1.0, 0.25, 3);
+    for (std::size_t i = 0; i < 50; ++i) points.push_back(points[37 * i]);
+    points.push_back(Point(9, 9, 9));
+    std::vector<std::size_t> order(points.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::shuffle(order.begin(), order.end(), std::mt19937(5));
+    PointList shuffled;
+    for (std::size_t i : order) shuffled.push_back(points[i]);
+
+    const NormalizedCloud a = normalizeCloud(points, 31, {}), b = normalizeCloud(shuffled, 31, {});
+    ASSERT_EQ(a.points.size(), 3000u);
+    EXPECT_EQ(a.points, b.points);
+    EXPECT_EQ(a.outliers.size(), 1u);
+    ASSERT_EQ(b.inputSize(), points.size());
+    for (std::size_t k = 0; k < order.size(); ++k) {
+        ASSERT_EQ(b.isOutlier(k), a.isOutlier(order[k])) << "input point " << order[k];
+        ASSERT_EQ(b.inputPosition(k), a.inputPosition(order[k])) << "input point " << order[k];
+        ASSERT_LT((b.inputPosition(k) - shuffled[k]).norm(), 1e-12) << "input point " << order[k];
+    }
 }
 
 // Parameters that are not finite or beyond any sensible value are refused by name.

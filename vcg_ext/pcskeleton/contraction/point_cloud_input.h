@@ -17,9 +17,11 @@ namespace pcskeleton {
 // The cloud as the algorithm sees it: exact duplicates merged, centred on its bounding
 // box and scaled so that the longest side of the box is 1.6 (the frame of the authors'
 // reference code, in which the paper's default weights were tuned). Results are mapped
-// back with toInputFrame(), so every result is independent of the cloud's units.
+// back with toInputFrame(), so every result is independent of the cloud's units. The
+// points are in an order fixed by their positions (a Z-order curve), so every result is
+// independent of the order in which the input lists them, too.
 struct NormalizedCloud {
-    PointList points;              // unique points that are not outliers, normalised frame
+    PointList points;              // unique points that are not outliers, normalised frame, in spatial order
     // For each input point, its index in `points`; for an outlier, -1 - its index in `outliers`.
     std::vector<int> uniqueIndex;
     PointList outliers;            // the input positions of the points set aside as outliers
