@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
+#include <random>
 
 using namespace pcskeleton;
 
@@ -52,6 +54,29 @@ TEST(PointSubsampling, LeavesOutFlaggedPointsAndIsDeterministic) {
         else EXPECT_GE(a.keeperOf[i], 0) << "point " << i;
     }
     for (int k : a.kept) EXPECT_FALSE(leaveOut[k]);
+}
+
+// The same points kept whatever the order of the input: the cube size is searched on a
+// sample chosen by coordinates (a cloud this much larger than the target is searched on a
+// sample), and the points of a regular grid, as near to their cube's centre as each other,
+// are told apart by their coordinates.
+TEST(PointSubsampling, TheKeptPointsDependOnThePointsNotOnTheirOrder) {
+    PointList grid;
+    for (int x = 0; x < 200; ++x)
+        for (int y = 0; y < 150; ++y) grid.push_back(Point(x, y, 0.25 * (x % 2)));
+    std::vector<std::size_t> order(grid.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::shuffle(order.begin(), order.end(), std::mt19937(3));
+    PointList shuffled;
+    for (std::size_t i : order) shuffled.push_back(grid[i]);
+
+    const PointSubsample a = spreadSubsample(grid, 200), b = spreadSubsample(shuffled, 200);
+    ASSERT_EQ(a.kept.size(), b.kept.size());
+    EXPECT_EQ(a.cellSize, b.cellSize);
+    for (std::size_t k = 0; k < order.size(); ++k) {
+        ASSERT_EQ(shuffled[std::size_t(b.kept[std::size_t(b.keeperOf[k])])], grid[std::size_t(a.kept[std::size_t(a.keeperOf[order[k]])])])
+            << "grid point " << order[k];
+    }
 }
 
 TEST(PointSubsampling, SmallCloudsAreKeptWhole) {

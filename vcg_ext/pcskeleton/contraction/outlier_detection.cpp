@@ -2,6 +2,7 @@
 
 #include "pcskeleton/core/errors.h"
 
+#include "pcskeleton/internal/coordinate_sample.h"
 #include "pcskeleton/internal/disjoint_sets.h"
 #include "pcskeleton/internal/median.h"
 #include "pcskeleton/internal/parallel_sort.h"
@@ -13,7 +14,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <unordered_map>
 #include <utility>
 
@@ -105,21 +105,6 @@ TestedPoints testEveryPoint(const PointList& points, const OutlierParameters& pa
     return result;
 }
 
-// A pseudo-random choice made from the point's coordinates alone: the same sample whatever
-// the order of the points in the file.
-bool inSample(const Point& p, std::uint64_t below) {
-    std::uint64_t h = 0;
-    for (int axis = 0; axis < 3; ++axis) {
-        std::uint64_t bits;
-        const double c = p[axis];
-        std::memcpy(&bits, &c, sizeof bits);
-        h = (h ^ bits) * 0x9e3779b97f4a7c15ULL;
-        h ^= h >> 29;
-    }
-    h *= 0xbf58476d1ce4e5b9ULL;
-    return (h ^ (h >> 32)) < below;
-}
-
 // How many of some points each cell of a grid holds. Without a usable grid (a zero or too
 // small side for the box) it answers "don't know": no points in a cell, all of them around
 // it, which sends every point to the exact search.
@@ -183,10 +168,7 @@ private:
 std::vector<char> testThroughSample(const PointList& points, const OutlierParameters& parameters) {
     const std::size_t n = points.size();
     const double share = double(parameters.statisticsSample) / double(n);
-    const auto below = std::uint64_t(share * 18446744073709551615.0);
-    std::vector<char> sampled(n);
-#pragma omp parallel for schedule(static)
-    for (long i = 0; i < long(n); ++i) sampled[std::size_t(i)] = inSample(points[std::size_t(i)], below);
+    const std::vector<char> sampled = coordinateSample(points, share);
     PointList sample;
     sample.reserve(std::size_t(1.1 * double(parameters.statisticsSample)));
     for (std::size_t i = 0; i < n; ++i) {

@@ -1,6 +1,7 @@
 #include "pcskeleton/contraction/point_subsampling.h"
 
 #include "pcskeleton/core/errors.h"
+#include "pcskeleton/internal/coordinate_sample.h"
 
 #include <Eigen/Geometry>
 
@@ -16,8 +17,9 @@ namespace pcskeleton {
 namespace {
 
 // Counting occupied cubes on every point of a 10M-point scan, a dozen times over, would
-// cost more than the contraction it saves; a stride sample with this many points per
-// target cube finds the cube size nearly as well, and the final grid uses every point.
+// cost more than the contraction it saves; a sample with this many points per target cube
+// (chosen by coordinates, so that it does not depend on the input's order) finds the cube
+// size nearly as well, and the final grid uses every point.
 constexpr std::size_t kSearchPointsPerCube = 50;
 // Bisection steps on the logarithm of the cube size: the bracket spans the sizes of a
 // curve-like and of a volume-filling cloud, and 12 halvings bring it within about 2%.
@@ -39,12 +41,12 @@ private:
     double inverse_;
 };
 
-std::size_t occupiedCubes(const PointList& points, const std::vector<int>& used, std::size_t stride, const Grid& grid,
+std::size_t occupiedCubes(const PointList& points, const std::vector<int>& sample, const Grid& grid,
                           std::size_t stopAbove) {
     std::unordered_set<std::uint64_t> cubes;
     cubes.reserve(2 * stopAbove);
-    for (std::size_t u = 0; u < used.size(); u += stride) {
-        cubes.insert(grid.key(points[used[u]]));
+    for (const int i : sample) {
+        cubes.insert(grid.key(points[std::size_t(i)]));
         if (cubes.size() > stopAbove) break;  // too fine already
     }
     return cubes.size();
@@ -75,16 +77,24 @@ PointSubsample spreadSubsample(const PointList& points, std::size_t target, cons
     // diagonal / cbrt(target) (points filling the box); the margin keeps the coarse end
     // safely under the target.
     const std::size_t stride = std::max<std::size_t>(1, used.size() / (kSearchPointsPerCube * target));
+    std::vector<int> sample;  // about one in `stride` of the used points
+    if (stride > 1) {
+        const std::vector<char> sampled = coordinateSample(points, 1.0 / double(stride));
+        for (const int i : used) {
+            if (sampled[std::size_t(i)]) sample.push_back(i);
+        }
+    }
+    const std::vector<int>& searched = stride > 1 ? sample : used;
     const Point origin = box.min();
     double fine = std::log(diagonal / double(target)), coarse = std::log(2.0 * diagonal / std::cbrt(double(target)));
     for (int step = 0; step < kSearchSteps; ++step) {
         const double middle = 0.5 * (fine + coarse);
-        if (occupiedCubes(points, used, stride, Grid(origin, std::exp(middle)), target) > target) fine = middle;
+        if (occupiedCubes(points, searched, Grid(origin, std::exp(middle)), target) > target) fine = middle;
         else coarse = middle;
     }
     // Each cube keeps its point nearest to the cube's centroid: a real sample, in the middle,
     // whatever the order of the input (a random point of each cube measured no better:
-    // docs/benchmarks.md#measurements-behind-the-constants). The stride sample misses some
+    // docs/benchmarks.md#measurements-behind-the-constants). The sample misses some
     // sparse cubes: the cube grows until all points fit, and the pass they fit in is kept.
     double cellSize = std::exp(coarse);
     std::unordered_map<std::uint64_t, int> cubeOf;
@@ -114,8 +124,13 @@ PointSubsample spreadSubsample(const PointList& points, std::size_t target, cons
     for (std::size_t c = 0; c < centroid.size(); ++c) centroid[c] /= double(members[c]);
     for (std::size_t u = 0; u < used.size(); ++u) {
         const int c = cubeOfUsed[u];
-        const double d = (points[used[u]] - centroid[c]).squaredNorm();
-        if (d < nearestDistance[c]) nearestDistance[c] = d, nearest[c] = used[u];
+        const Point& p = points[std::size_t(used[u])];
+        const double d = (p - centroid[c]).squaredNorm();
+        // Equally near points (a regular grid's) by coordinates, not by their order.
+        if (d < nearestDistance[c] ||
+            (d == nearestDistance[c] && lexicographicallyBefore(p, points[std::size_t(nearest[c])]))) {
+            nearestDistance[c] = d, nearest[c] = used[u];
+        }
     }
     // Kept points in input order, so the subsample does not depend on hashing.
     std::vector<int> order(nearest.size());
