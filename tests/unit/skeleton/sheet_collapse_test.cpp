@@ -1,7 +1,7 @@
 // Sheets onto their medial axes: a one-sided plate with two holes gives a loop around each
 // hole and no hub, also when a grazing scan samples it in bands or when it is sparse; a disc
-// one node at its centre; tubes, a thick closed plate and a narrow leaf are left to
-// contraction; the paper's pipeline does without.
+// one node at its centre; tubes, a thick closed plate, a narrow leaf and the flat middle
+// of a cup are left to contraction; the paper's pipeline does without.
 #include <pcskeleton/skeleton/sheet_collapse.h>
 #include <pcskeleton/curve_skeleton.h>
 #include "support/sampled_shapes.h"
@@ -123,6 +123,20 @@ TEST(SheetCollapse, TubesAThickClosedPlateAndANarrowLeafAreLeftToContraction) {
     const SkeletonResult leaf = computeCurveSkeleton(blade);
     ASSERT_TRUE(leaf.quality.sheets);
     EXPECT_EQ(leaf.quality.sheets->patches, 0);
+}
+
+// A cup 1.6 across whose rim rises 45 degrees (a cupped leaf, as the paper's tobacco):
+// its middle, within 30 degrees of flat, is a wide flat patch, but it goes on into sheet
+// points that face another way. It is no plate: its points are left to contraction.
+TEST(SheetCollapse, TheFlatMiddleOfACupIsLeftToContraction) {
+    const PointList cup = shapes::sample(shapes::sheet([](double u, double v) {
+                                             const double r = 0.8 * u, a = 2 * M_PI * v;
+                                             return Point(r * std::cos(a), r * std::sin(a), 0.625 * r * r);
+                                         }, 24, 96),
+                                         kPoints, 7);
+    const SkeletonResult r = computeCurveSkeleton(cup);
+    ASSERT_TRUE(r.quality.sheets);
+    EXPECT_EQ(r.quality.sheets->patches, 0);
 }
 
 TEST(SheetCollapse, ThePapersPipelineThinsTheContractedPointsAsTheyAre) {

@@ -39,6 +39,10 @@ constexpr double kKeptSpread = 0.6;
 constexpr double kLayeredShare = 0.2;
 constexpr std::size_t kLayerProbeStride = 7;  // every seventh point is probed
 constexpr double kParallelSheets = 0.85;      // |cos| of the angle between their planes
+// A patch is a flat stretch of a curved sheet, not a plate, when more than this share of the
+// points next to it are sheet points too, facing another way. Plates measure far below it,
+// the flat middle of a cupped leaf far above (docs/benchmarks.md, "The order of the input").
+constexpr double kCurvingOnShare = 0.5;
 // Points next to a patch within this many thinning radii of its plane join it.
 constexpr double kBandRadii = 0.5;
 // The grid's cell, in thinning radii. The grid is closed with a disc of kClosingRadii
@@ -61,15 +65,17 @@ constexpr double kMostClosingCells = 16;
 constexpr double kSpurRadii = 2.0;
 
 struct Neighbourhoods {
-    std::vector<char> sheet;    // per point
-    std::vector<Point> normal;  // per point
+    std::vector<char> sheet;        // per point
+    std::vector<Point> normal;      // per point
+    std::vector<double> thickness;  // per point: its neighbourhood's first spread over its second
 };
 
 // `points` holds at least kFewestPatchPoints (collapseSheets returns earlier), so the nearest
 // kFewestNeighbours always exist.
 static_assert(kFewestPatchPoints >= kFewestNeighbours);
 Neighbourhoods sheetNeighbourhoods(const PointList& points, const PointIndex& index, double radius) {
-    Neighbourhoods n{std::vector<char>(points.size(), 0), std::vector<Point>(points.size(), Point::Zero())};
+    Neighbourhoods n{std::vector<char>(points.size(), 0), std::vector<Point>(points.size(), Point::Zero()),
+                     std::vector<double>(points.size(), 0.0)};
     const std::vector<std::size_t>& order = index.spatialOrder();  // consecutive queries share the tree's nodes
 #pragma omp parallel
     {
@@ -85,6 +91,7 @@ Neighbourhoods sheetNeighbourhoods(const PointList& points, const PointIndex& in
             const Eigen::Vector3d& v = plane.variances;
             n.sheet[i] = v(1) >= kSpread * v(2) && v(0) <= kFlat * v(1);
             n.normal[i] = plane.axes.col(0);
+            n.thickness[i] = v(1) > 0 ? v(0) / v(1) : 0.0;
         }
     }
     return n;
@@ -102,23 +109,50 @@ void growAlongRings(const OneRings& rings, std::vector<int>& members, const Join
     }
 }
 
-// Sheet points joined by 1-rings, each facing within kFacingDegrees of its patch's first point.
+// Sheet points joined by 1-rings, each facing within kFacingDegrees of its patch's first
+// point. The flattest points seed patches first: their planes are the surest.
 std::vector<std::vector<int>> flatPatches(const Neighbourhoods& n, const OneRings& rings) {
     const double facing = std::cos(kFacingDegrees * M_PI / 180.0);
+    std::vector<int> seeds;
+    for (std::size_t i = 0; i < n.sheet.size(); ++i) {
+        if (n.sheet[i]) seeds.push_back(int(i));
+    }
+    // Equally flat points (an exact plane's) by index: the pipeline's points come in an
+    // order their positions fix (point_cloud_input.h).
+    std::stable_sort(seeds.begin(), seeds.end(),
+                     [&](int a, int b) { return n.thickness[std::size_t(a)] < n.thickness[std::size_t(b)]; });
     std::vector<char> assigned(n.sheet.size(), 0);
     std::vector<std::vector<int>> patches;
-    for (std::size_t seed = 0; seed < n.sheet.size(); ++seed) {
-        if (!n.sheet[seed] || assigned[seed]) continue;
-        std::vector<int> patch{int(seed)};
-        assigned[seed] = 1;
+    for (const int seed : seeds) {
+        if (assigned[std::size_t(seed)]) continue;
+        std::vector<int> patch{seed};
+        assigned[std::size_t(seed)] = 1;
+        const Point& seedNormal = n.normal[std::size_t(seed)];
         growAlongRings(rings, patch, [&](std::size_t m) {
-            if (!n.sheet[m] || assigned[m] || std::abs(n.normal[m].dot(n.normal[seed])) < facing) return false;
+            if (!n.sheet[m] || assigned[m] || std::abs(n.normal[m].dot(seedNormal)) < facing) return false;
             assigned[m] = 1;
             return true;
         });
         if (patch.size() >= kFewestPatchPoints) patches.push_back(std::move(patch));
     }
     return patches;
+}
+
+// A plate ends at its rim, at its holes or at a crease, where the points next to it are no
+// sheet points or none at all; a flat stretch of a curved sheet (a cupped leaf) goes on into
+// sheet points that face another way.
+bool endsAtItsRim(const Neighbourhoods& n, const OneRings& rings, const std::vector<int>& patch) {
+    std::vector<char> member(n.sheet.size(), 0);
+    for (int i : patch) member[std::size_t(i)] = 1;
+    std::size_t onSheets = 0, beside = 0;
+    for (int i : patch) {
+        for (const int* j = rings.ringBegin(std::size_t(i)); j != rings.ringEnd(std::size_t(i)); ++j) {
+            if (member[std::size_t(*j)]) continue;
+            ++beside;
+            onSheets += n.sheet[std::size_t(*j)];
+        }
+    }
+    return double(onSheets) <= kCurvingOnShare * double(beside);
 }
 
 // Wide, left as wide and flat by contraction, and one layer (the header's step 2).
@@ -150,17 +184,33 @@ bool isOneLayerPlate(const PointList& original, const PointList& contracted, con
     return double(layered) <= kLayeredShare * double(probed);
 }
 
-// Adds to `patch` the points next to it (through 1-rings, transitively) that are no sheet
-// point, not yet `taken` by a patch and within kBandRadii of its plane.
-void addBand(const PointList& original, const Neighbourhoods& n, const OneRings& rings, const LocalPlane& plane,
-             double radius, std::vector<char>& taken, std::vector<int>& patch) {
-    for (int i : patch) taken[std::size_t(i)] = 1;
-    growAlongRings(rings, patch, [&](std::size_t m) {
-        if (taken[m] || n.sheet[m]) return false;
-        if (std::abs((original[m] - plane.centroid).dot(plane.axes.col(0))) > kBandRadii * radius) return false;
-        taken[m] = 1;
-        return true;
-    });
+// Adds to each patch the points next to it (through 1-rings, transitively) that are no sheet
+// point and lie within kBandRadii of its plane. A point next to two patches (the band along
+// a crease where two plates meet) joins the one whose plane it is nearer, whichever patch
+// comes first.
+void addBands(const PointList& original, const Neighbourhoods& n, const OneRings& rings,
+              const std::vector<LocalPlane>& planes, double radius, std::vector<std::vector<int>>& patches) {
+    const std::size_t none = patches.size();
+    std::vector<std::size_t> owner(original.size(), none);
+    std::vector<double> offset(original.size(), INFINITY);
+    std::vector<char> reached(original.size());
+    for (std::size_t p = 0; p < patches.size(); ++p) {
+        std::fill(reached.begin(), reached.end(), 0);
+        for (int i : patches[p]) reached[std::size_t(i)] = 1;
+        std::vector<int> band = patches[p];
+        const LocalPlane& plane = planes[p];
+        growAlongRings(rings, band, [&](std::size_t m) {
+            if (reached[m] || n.sheet[m]) return false;
+            const double off = std::abs((original[m] - plane.centroid).dot(plane.axes.col(0)));
+            if (off > kBandRadii * radius) return false;
+            reached[m] = 1;
+            if (off < offset[m]) offset[m] = off, owner[m] = p;
+            return true;
+        });
+    }
+    for (std::size_t m = 0; m < original.size(); ++m) {
+        if (owner[m] != none) patches[owner[m]].push_back(int(m));
+    }
 }
 
 // A binary image; cells outside it read as empty.
@@ -348,14 +398,21 @@ SheetCollapseReport collapseSheets(const PointList& original, PointList& contrac
     if (original.size() < kFewestPatchPoints || !(radius > 0)) return report;
     const PointIndex index(original);
     const Neighbourhoods n = sheetNeighbourhoods(original, index, radius);
-    std::vector<char> taken(original.size(), 0);
+    std::vector<std::vector<int>> plates;
+    std::vector<LocalPlane> planes;
     for (std::vector<int>& patch : flatPatches(n, rings)) {
         const LocalPlane plane = fitLocalPlane(original, patch);
-        if (!isOneLayerPlate(original, contracted, index, n, patch, plane, radius)) continue;
-        addBand(original, n, rings, plane, radius, taken, patch);
-        moveOntoAxis(original, index, patch, plane, radius, contracted);
+        const bool plate =
+            endsAtItsRim(n, rings, patch) && isOneLayerPlate(original, contracted, index, n, patch, plane, radius);
+        if (!plate) continue;
+        plates.push_back(std::move(patch));
+        planes.push_back(plane);
+    }
+    addBands(original, n, rings, planes, radius, plates);
+    for (std::size_t p = 0; p < plates.size(); ++p) {
+        moveOntoAxis(original, index, plates[p], planes[p], radius, contracted);
         ++report.patches;
-        report.points += patch.size();
+        report.points += plates[p].size();
     }
     return report;
 }

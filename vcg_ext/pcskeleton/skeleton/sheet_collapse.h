@@ -10,15 +10,18 @@
 // 1. A point lies on a sheet when its neighbours within kNeighbourhoodRadii thinning radii
 //    (on a sparse cloud, where they are fewer than kFewestNeighbours, its nearest that many)
 //    spread in two directions and hardly in the third (their principal variances).
-// 2. Sheet points joined by 1-rings whose planes face the same way form one patch. A patch is
-//    collapsed when it is wide (kWidePatchRadii both ways), when contraction left it as wide
-//    and flat as it was (a tube's strip narrows), and when it is one layer (a face of a
-//    thick closed plate has the other face across it, and contraction handles those).
+// 2. Sheet points joined by 1-rings whose planes face the same way form one patch, seeded at
+//    the flattest point first. A patch is collapsed when it ends at its rim (a cupped leaf's
+//    flat middle goes on into sheet points facing another way), when it is wide
+//    (kWidePatchRadii both ways), when contraction left it as wide and flat as it was (a
+//    tube's strip narrows), and when it is one layer (a face of a thick closed plate has the
+//    other face across it, and contraction handles those).
 // 3. The patch takes in the points next to it that lie in its plane (the band along a crease
-//    where two plates meet), is drawn on a grid of half a thinning radius in its plane,
-//    closed over gaps into which a disc of 1.5 thinning radii does not fit (the bands a
-//    grazing scan leaves between its lines among them), and thinned to its medial axis
-//    (the holes that remain kept); spurs shorter than two thinning radii are cut off.
+//    where two plates meet goes to the plate whose plane is nearer), is drawn on a grid of
+//    half a thinning radius in its plane, closed over gaps into which a disc of 1.5
+//    thinning radii does not fit (the bands a grazing scan leaves between its lines among
+//    them), and thinned to its medial axis (the holes that remain kept); spurs shorter than
+//    two thinning radii are cut off.
 // 4. Each of its points moves to the axis cell nearest it across the patch, keeping its
 //    place within its cell and its height above the plane.
 #pragma once
