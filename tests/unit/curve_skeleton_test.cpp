@@ -203,7 +203,8 @@ TEST(CurveSkeleton, ANoisyTubesRadiiAreTheTubesNotTheNoises) {
     const PointList cloud = shapes::withNoise(clean, 0.03 / diagonal, 5);
     const SkeletonResult result = computeCurveSkeleton(cloud);
     const SkeletonGraph& s = result.skeleton;
-    EXPECT_NEAR(medianMiddleRadius(s, s.radii), 0.1, 0.003);
+    // Within 5% of the tube's radius; the noise's deviation is 30% of it.
+    EXPECT_NEAR(medianMiddleRadius(s, s.radii), 0.1, 0.005);
     EXPECT_GT(medianMiddleRadius(s, meanDistanceToNodes(cloud, s.pointNode, s.nodes)), 0.105);
 }
 
