@@ -1,6 +1,7 @@
 #include "pcskeleton/contraction/point_cloud_input.h"
 
 #include "pcskeleton/internal/parallel_sort.h"
+#include "pcskeleton/internal/spatial_index.h"
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
@@ -94,17 +95,6 @@ std::uint64_t exactHash(const Point& p) {
     return h;
 }
 
-// Spreads the low 21 bits of `v` to every third bit: one coordinate of a Z-order key.
-std::uint64_t spreadBits(std::uint64_t v) {
-    v &= 0x1fffffull;
-    v = (v | v << 32) & 0x1f00000000ffffull;
-    v = (v | v << 16) & 0x1f0000ff0000ffull;
-    v = (v | v << 8) & 0x100f00f00f00f00full;
-    v = (v | v << 4) & 0x10c30c30c30c30c3ull;
-    v = (v | v << 2) & 0x1249249249249249ull;
-    return v;
-}
-
 // Puts the distinct points along a Z-order curve through their bounding box, the points of
 // one cell of the curve by their coordinates: an order that the positions alone fix. Every
 // later step that visits points in turn (a seed, a tie, the solver's elimination order)
@@ -112,31 +102,19 @@ std::uint64_t spreadBits(std::uint64_t v) {
 // space are mostly near in memory.
 void putInSpatialOrder(NormalizedCloud& cloud) {
     const std::size_t n = cloud.points.size();
-    const Eigen::AlignedBox3d box = boundingBox(cloud.points);
-    const double extent = box.sizes().maxCoeff();
-    const double cellsPerUnit = extent > 0 ? double((1 << 21) - 1) / extent : 0.0;
-    std::vector<std::pair<std::uint64_t, int>> keyed(n);
-#pragma omp parallel for schedule(static)
-    for (long i = 0; i < long(n); ++i) {
-        const Eigen::Array3d cell = ((cloud.points[std::size_t(i)] - box.min()) * cellsPerUnit).array().floor();
-        const auto bits = [](double c) { return std::uint64_t(std::clamp(c, 0.0, double((1 << 21) - 1))); };
-        keyed[std::size_t(i)] = {spreadBits(bits(cell[0])) | spreadBits(bits(cell[1])) << 1 |
-                                     spreadBits(bits(cell[2])) << 2,
-                                 int(i)};
-    }
-    parallelSort(keyed.begin(), keyed.end());
+    std::vector<std::pair<std::uint64_t, std::size_t>> keyed = sortedZOrderCodes(cloud.points);
     for (std::size_t begin = 0, end = 0; begin < n; begin = end) {  // one cell's points by coordinates
         end = begin + 1;
         while (end < n && keyed[end].first == keyed[begin].first) ++end;
         std::sort(keyed.begin() + long(begin), keyed.begin() + long(end), [&](const auto& a, const auto& b) {
-            return lexicographicallyBefore(cloud.points[std::size_t(a.second)], cloud.points[std::size_t(b.second)]);
+            return lexicographicallyBefore(cloud.points[a.second], cloud.points[b.second]);
         });
     }
     PointList ordered(n);
     std::vector<int> rank(n);
     for (std::size_t r = 0; r < n; ++r) {
-        ordered[r] = cloud.points[std::size_t(keyed[r].second)];
-        rank[std::size_t(keyed[r].second)] = int(r);
+        ordered[r] = cloud.points[keyed[r].second];
+        rank[keyed[r].second] = int(r);
     }
     cloud.points = std::move(ordered);
     for (int& unique : cloud.uniqueIndex) {

@@ -49,6 +49,14 @@ std::uint64_t spreadBits(std::uint64_t v) {
 // an order unrelated to space (merged views, shuffled exports): on a randomly ordered
 // 1M-point cloud this makes the k-nearest-neighbour queries several times faster.
 std::vector<std::size_t> zOrder(const PointList& points) {
+    const std::vector<std::pair<std::uint64_t, std::size_t>> coded = sortedZOrderCodes(points);
+    std::vector<std::size_t> order(points.size());
+    for (std::size_t r = 0; r < order.size(); ++r) order[r] = coded[r].second;
+    return order;
+}
+}  // namespace
+
+std::vector<std::pair<std::uint64_t, std::size_t>> sortedZOrderCodes(const PointList& points) {
     const Eigen::AlignedBox3d box = boundingBox(points);
     const double extent = std::max(box.sizes().maxCoeff(), std::numeric_limits<double>::min());
     const double cells = double((1 << 21) - 1) / extent;
@@ -62,11 +70,8 @@ std::vector<std::size_t> zOrder(const PointList& points) {
     }
     // (code, index) pairs are distinct: the order is the same on any number of threads.
     parallelSort(coded.begin(), coded.end());
-    std::vector<std::size_t> order(points.size());
-    for (std::size_t r = 0; r < order.size(); ++r) order[r] = coded[r].second;
-    return order;
+    return coded;
 }
-}  // namespace
 
 struct PointIndex::Tree {
     explicit Tree(const PointList& points)

@@ -4,10 +4,17 @@
 
 #include "pcskeleton/core/point.h"
 
+#include <cstdint>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace pcskeleton {
+
+// Each point's cell on a Z-order curve through the points' bounding box (21 bits per axis)
+// with the point's index, sorted by cell and then index: points close in space come close
+// together. The index's order and the normalised cloud's order are both built on it.
+std::vector<std::pair<std::uint64_t, std::size_t>> sortedZOrderCodes(const PointList& points);
 
 class PointIndex {
 public:
