@@ -180,9 +180,14 @@ TEST(CurveSkeleton, CorrespondenceAndRadiiDescribeTheTube) {
         // Away from the open ends the radius is the tube's.
         if (s.nodes[n].z() > 0.2 && s.nodes[n].z() < 0.8) EXPECT_NEAR(s.radii[n], 0.1, 0.01);
     }
-    // Every point belongs to a node near it along the axis.
+    // Every point belongs to a node near it along the axis. Contraction pulls an open end's
+    // node in by about the tube's radius (tip extension, off here, makes up for it): the
+    // rim's points may be that and a node spacing (0.02) from their node.
+    const std::vector<int> degree = nodeDegrees(s.nodeCount(), s.edges);
     for (std::size_t i = 0; i < cloud.size(); i += 50) {
-        EXPECT_LT(std::abs(cloud[i].z() - s.nodes[s.pointNode[i]].z()), 0.1) << "point " << i;
+        const int node = s.pointNode[i];
+        const double allowed = degree[std::size_t(node)] == 1 ? 0.1 + 0.02 : 0.1;
+        EXPECT_LT(std::abs(cloud[i].z() - s.nodes[node].z()), allowed) << "point " << i;
     }
 }
 

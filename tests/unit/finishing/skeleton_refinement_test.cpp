@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -78,6 +79,52 @@ TEST(SkeletonRefinement, TrimsStragglingEndsButNotThinLimbs) {
     EXPECT_TRUE(g.nodes[report.nodeMap[10]].isApprox(Point(1.0, 0, 0)));
     EXPECT_EQ(report.nodeMap[stray], report.nodeMap[5]);
     EXPECT_NE(report.nodeMap[thin], report.nodeMap[3]) << "the thin limb stays";
+}
+
+TEST(SkeletonRefinement, TakesBackAnEndHookedOffItsLimbWithinTheTube) {
+    // Noise gathers points at the side of a limb's end into nodes of their own, each owning
+    // more than a straggler (8 points where the chain's nodes own 20), fewer in all than the
+    // node they hang from: they turn off the limb's way within its tube (radius 0.2).
+    const auto chainWithSidewaysEnd = [](const std::vector<double>& sideways, std::vector<int>& end,
+                                         std::size_t pointsEach = 8) {
+        SkeletonGraph g = straightChain();
+        for (int node = 0; node <= 10; ++node) g.pointNode.insert(g.pointNode.end(), 20, node);
+        int previous = 10;
+        for (double y : sideways) {
+            previous = addNode(g, Point(1.0, y, 0), previous);
+            g.pointNode.insert(g.pointNode.end(), pointsEach, previous);
+            end.push_back(previous);
+        }
+        return g;
+    };
+    for (const std::vector<double>& sideways : {std::vector<double>{0.15}, std::vector<double>{0.1, 0.18}}) {
+        SCOPED_TRACE(std::to_string(sideways.size()) + " hooked nodes");
+        std::vector<int> hook;
+        SkeletonGraph hooked = chainWithSidewaysEnd(sideways, hook);
+        ASSERT_EQ(invariantViolation(hooked), "");
+        const RefinementReport report = refineSkeleton(hooked, {}, kSpacing);
+        EXPECT_EQ(report.endsTrimmed, 1) << describe(report);
+        for (int node : hook) EXPECT_EQ(report.nodeMap[node], report.nodeMap[10]);
+        EXPECT_TRUE(hooked.nodes[report.nodeMap[10]].isApprox(Point(1.0, 0, 0)));
+        EXPECT_EQ(analyseTopology(hooked).tips, 2);
+    }
+
+    // The same turn reaching out of the tube (past the radius plus a node spacing) is a
+    // limb that bends, and stays.
+    std::vector<int> bend;
+    SkeletonGraph bent = chainWithSidewaysEnd({0.35}, bend);
+    const RefinementReport kept = refineSkeleton(bent, {}, kSpacing);
+    EXPECT_EQ(kept.endsTrimmed, 0) << describe(kept);
+    EXPECT_NE(kept.nodeMap[bend[0]], kept.nodeMap[10]);
+    EXPECT_EQ(bent.nodeCount(), std::size_t(12));
+
+    // Within the tube but owning more points than the node it turns at: the limb's own end
+    // (a thick body's cap past its last junction), which stays.
+    std::vector<int> cap;
+    SkeletonGraph capped = chainWithSidewaysEnd({0.15}, cap, 30);
+    const RefinementReport capKept = refineSkeleton(capped, {}, kSpacing);
+    EXPECT_EQ(capKept.endsTrimmed, 0) << describe(capKept);
+    EXPECT_EQ(capped.nodeCount(), std::size_t(12));
 }
 
 namespace {

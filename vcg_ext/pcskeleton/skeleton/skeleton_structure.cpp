@@ -33,6 +33,10 @@ constexpr double kStripReachQuantile = 0.9;
 // A node at a limb's end owning fewer than this share of the points of the skeleton's
 // median node is a straggler (stragglingEnds).
 constexpr double kStragglerShare = 0.1;
+// A limb's end is hooked (stragglingEnds) where its bone onwards turns more than 60 degrees
+// (cosine below this) from the bone behind it. One bone each: the chord over several would
+// see a tightly curled limb's end turn as much.
+constexpr double kHookCosine = 0.5;
 // A junction of three or four bones is a through junction when two of the bones other than
 // the one judged meet at more than 120 degrees (cosine below this), straighter than a
 // symmetric Y: a strand runs on through it and the judged bone leaves it from the side
@@ -228,6 +232,35 @@ bool isSpur(const SkeletonGraph& graph, const Limb& limb, double nodeSpacing) {
     return limb.length < std::max(graph.radii[limb.path.back()], nodeSpacing);
 }
 
+namespace {
+
+// The hooked end of a limb: the nodes from the tip up to the node where the limb turns
+// off its way (its bone onwards turns from the bone behind it), all within that node's tube
+// (its radius plus a node spacing) and owning fewer points together than that node. Noise
+// points gathered at the side of a limb's end make such a hook, which would send tip
+// extension across the limb; a limb's own end owns its cap's points. Returns the number
+// of nodes before that node, 0 for a limb without a hook.
+std::size_t hookLength(const SkeletonGraph& graph, const std::vector<std::vector<int>>& nodePoints, const Limb& limb,
+                       double nodeSpacing) {
+    std::size_t hookPoints = 0;
+    for (std::size_t turn = 1; turn + 1 < limb.path.size(); ++turn) {
+        const int node = limb.path[turn];
+        const Point& at = graph.nodes[node];
+        const double reach = graph.radii[node] + nodeSpacing;
+        const auto outOfTube = [&](int n) { return (graph.nodes[n] - at).norm() > reach; };
+        if (std::any_of(limb.path.begin(), limb.path.begin() + std::ptrdiff_t(turn), outOfTube)) return 0;
+        hookPoints += nodePoints[limb.path[turn - 1]].size();
+        const Point onward = (at - graph.nodes[limb.path[turn + 1]]).normalized();
+        const Point hook = (graph.nodes[limb.path[turn - 1]] - at).normalized();
+        if (onward.allFinite() && hook.allFinite() && onward.dot(hook) < kHookCosine) {
+            return hookPoints < nodePoints[node].size() ? turn : 0;
+        }
+    }
+    return 0;
+}
+
+}  // namespace
+
 std::vector<std::vector<int>> stragglingEnds(const SkeletonGraph& graph,
                                              const std::vector<std::vector<int>>& nodePoints, double nodeSpacing) {
     const double fewest = kStragglerShare * medianPointsPerNode(nodePoints);
@@ -240,7 +273,12 @@ std::vector<std::vector<int>> stragglingEnds(const SkeletonGraph& graph,
         // limb ends at may keep them only if all the limb's nodes together own too few: a
         // thin limb has few points per node, but not in all.
         const auto keeper = std::find_if(limb.path.begin(), limb.path.end(), [&](int n) { return owns(n) >= fewest; });
-        if (keeper == limb.path.begin() || keeper == limb.path.end()) continue;
+        if (keeper == limb.path.begin()) {
+            const std::size_t hook = hookLength(graph, nodePoints, limb, nodeSpacing);
+            if (hook > 0) ends.emplace_back(limb.path.begin(), limb.path.begin() + std::ptrdiff_t(hook) + 1);
+            continue;
+        }
+        if (keeper == limb.path.end()) continue;
         if (keeper + 1 == limb.path.end()) {
             double limbPoints = 0.0;
             for (auto n = limb.path.begin(); n != keeper; ++n) limbPoints += owns(*n);

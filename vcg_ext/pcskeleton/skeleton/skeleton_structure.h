@@ -56,6 +56,10 @@ bool isSpur(const SkeletonGraph& graph, const Limb& limb, double nodeSpacing);
 // within that node's radius plus two node spacings of it. That node may be the junction
 // the limb ends at (the whole limb is stragglers) only if the limb's nodes together own
 // fewer points than that tenth: a thin limb has few points per node, but more in all.
+// A limb whose tip owns more has a straggling end when it is hooked: from the tip up to a
+// node where the limb turns more than 60 degrees (bone against bone), all within that
+// node's radius plus a node spacing of it and owning fewer points together than it (noise
+// gathered at the side of a limb's end).
 std::vector<std::vector<int>> stragglingEnds(const SkeletonGraph& graph,
                                              const std::vector<std::vector<int>>& nodePoints, double nodeSpacing);
 
