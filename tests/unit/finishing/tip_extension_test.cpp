@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <string>
 
 using namespace pcskeleton;
 using namespace pcskeleton::graphs;
@@ -57,21 +59,26 @@ TEST(TipExtension, ReachesTheEndsOfACappedTube) {
 TEST(TipExtension, StopsAtTheEndsOfANoisyTubeNotAtItsFarthestPoints) {
     // Noise of 2% of the diagonal (about a quarter of the radius) scatters points well beyond
     // the caps; the limb still ends at the caps, where the points' density along the axis falls.
-    const PointList cloud = shapes::withNoise(shapes::cylinder(6000, 0.1, 1.0, /*capped=*/true), 0.02);
-    double lowest = 1e9, highest = -1e9;
-    for (const Point& p : cloud) lowest = std::min(lowest, p.z()), highest = std::max(highest, p.z());
-    ASSERT_LT(lowest, -0.1 - 0.05);
-    ASSERT_GT(highest, 1.1 + 0.05);
-    const SkeletonResult result = computeCurveSkeleton(cloud);
-    ASSERT_EQ(analyseTopology(result.skeleton).tips, 2);
-    ASSERT_TRUE(result.quality.tipExtension);
-    EXPECT_EQ(result.quality.tipExtension->extendedTips, 2);
-    // At the caps within about the noise's deviation (0.025), short of the farthest points.
-    const TipEnds ends = tipEnds(result.skeleton);
-    EXPECT_NEAR(ends.low, -0.1, 0.03);
-    EXPECT_NEAR(ends.high, 1.1, 0.03);
-    EXPECT_GT(ends.low, lowest + 0.03);
-    EXPECT_LT(ends.high, highest - 0.03);
+    // Eight draws of the noise: on some, noise points gather at the side of a limb's end into
+    // a tip that hooks off the axis, which refinement takes back into the limb.
+    for (std::uint32_t seed = 1; seed <= 8; ++seed) {
+        SCOPED_TRACE("noise seed " + std::to_string(seed));
+        const PointList cloud = shapes::withNoise(shapes::cylinder(6000, 0.1, 1.0, /*capped=*/true), 0.02, seed);
+        double lowest = 1e9, highest = -1e9;
+        for (const Point& p : cloud) lowest = std::min(lowest, p.z()), highest = std::max(highest, p.z());
+        ASSERT_LT(lowest, -0.1 - 0.04);
+        ASSERT_GT(highest, 1.1 + 0.04);
+        const SkeletonResult result = computeCurveSkeleton(cloud);
+        ASSERT_EQ(analyseTopology(result.skeleton).tips, 2);
+        ASSERT_TRUE(result.quality.tipExtension);
+        EXPECT_EQ(result.quality.tipExtension->extendedTips, 2);
+        // At the caps within about the noise's deviation (0.025), short of the farthest points.
+        const TipEnds ends = tipEnds(result.skeleton);
+        EXPECT_NEAR(ends.low, -0.1, 0.03);
+        EXPECT_NEAR(ends.high, 1.1, 0.03);
+        EXPECT_GT(ends.low, lowest + 0.03);
+        EXPECT_LT(ends.high, highest - 0.03);
+    }
 }
 
 TEST(TipExtension, LeavesLoopsAndSpursAlone) {

@@ -39,14 +39,17 @@ double limbEnd(const std::vector<double>& along, double window) {
     return along[n / 2];
 }
 
-// The tip and the nodes behind it on its limb, up to the first one two node spacings away
-// (or the limb's other end). The last one sets the limb's direction at its tip.
+// The tip and the nodes behind it on its limb, up to the first one two node spacings and
+// the tip's diameter away (or the limb's other end). The last one sets the limb's direction
+// at its tip: on a tube thicker than the node spacing, noise moves the nodes across the
+// tube by a share of its radius, which tilts a direction read over less.
 std::vector<int> limbEndNodes(const SkeletonGraph& skeleton, const Limb& limb, double nodeSpacing) {
     const Point& tip = skeleton.nodes[limb.path.front()];
+    const double back = std::max(2.0 * nodeSpacing, 2.0 * skeleton.radii[limb.path.front()]);
     std::vector<int> nodes;
     for (int n : limb.path) {
         nodes.push_back(n);
-        if ((skeleton.nodes[n] - tip).norm() >= 2.0 * nodeSpacing) break;
+        if ((skeleton.nodes[n] - tip).norm() >= back) break;
     }
     return nodes;
 }

@@ -2,7 +2,8 @@
 // so the tip node, the centre of its points, stops short of the limb's end: the skeleton
 // is shorter than the shape. Each limb that is not a spur is extended from its tip, along
 // its direction over the last bones, to where its points end: those of the tip and of the
-// nodes up to two node spacings behind it that lie within 1.5 radii of the limb's axis
+// nodes behind it up to two node spacings and the tip's diameter away (the stretch that
+// sets the direction) that lie within 1.5 radii of the limb's axis
 // (outliers and noise off to the side do not count), and where their density along the
 // axis falls to half its level (on a clean limb the farthest of them; under noise, not
 // the noise's tail beyond the end).
