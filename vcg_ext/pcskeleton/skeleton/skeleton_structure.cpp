@@ -252,7 +252,8 @@ std::size_t hookLength(const SkeletonGraph& graph, const std::vector<std::vector
         hookPoints += nodePoints[limb.path[turn - 1]].size();
         const Point onward = (at - graph.nodes[limb.path[turn + 1]]).normalized();
         const Point hook = (graph.nodes[limb.path[turn - 1]] - at).normalized();
-        if (onward.allFinite() && hook.allFinite() && onward.dot(hook) < kHookCosine) {
+        // Eigen leaves a zero vector as it is when normalised: coincident nodes make no turn.
+        if (!onward.isZero() && !hook.isZero() && onward.dot(hook) < kHookCosine) {
             return hookPoints < nodePoints[node].size() ? turn : 0;
         }
     }
