@@ -31,8 +31,9 @@ struct TestedPoints {
     double reach = 0.0;  // the isolation distance
 };
 
-// Every point's own k nearest neighbours: the isolation, local and group tests.
-TestedPoints testEveryPoint(const PointList& points, const OutlierParameters& parameters) {
+// Every point's own k nearest neighbours: the isolation, local and group tests. `index` is
+// made on `points`.
+TestedPoints testEveryPoint(const PointList& points, const PointIndex& index, const OutlierParameters& parameters) {
     const std::size_t n = points.size();
     TestedPoints result;
     result.outlier.assign(n, 0);
@@ -40,7 +41,6 @@ TestedPoints testEveryPoint(const PointList& points, const OutlierParameters& pa
     // Everything below runs on ranks along the index's space-filling curve (see
     // spatial_index.h): each point's k nearest neighbours, row by row in one array (k + 1
     // found, the point itself first, which the row leaves out).
-    const PointIndex index(points);
     std::vector<int> neighbours(n * kNeighbours);
     auto row = [&](std::size_t r) { return neighbours.begin() + std::ptrdiff_t(r * kNeighbours); };
     std::vector<double> kthDistance(n);
@@ -124,15 +124,15 @@ public:
         if (!usable_) return false;
         const Eigen::Array3i c = cell(p);
         std::size_t count = 0;
-        for (int dx = -1; dx <= 1; ++dx)
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dz = -1; dz <= 1; ++dz) {
-                    const Eigen::Array3i n = c + Eigen::Array3i(dx, dy, dz);
-                    const Eigen::Array3d low = origin_.array() + n.cast<double>() * side_;
-                    const Eigen::Array3d high = low + side_;
-                    const Eigen::Array3d farthest = (p.array() - low).abs().max((high - p.array()).abs());
-                    if (farthest.matrix().norm() <= radius && (count += countAt(n)) >= k) return true;
-                }
+        // p's own cell first: on a surface it often holds k points by itself.
+        for (int o = 0; o < 27; ++o) {
+            const int shifted = (o + 13) % 27;
+            const Eigen::Array3i n = c + Eigen::Array3i(shifted % 3 - 1, shifted / 3 % 3 - 1, shifted / 9 - 1);
+            const Eigen::Array3d low = origin_.array() + n.cast<double>() * side_;
+            const Eigen::Array3d high = low + side_;
+            const Eigen::Array3d farthest = (p.array() - low).abs().max((high - p.array()).abs());
+            if (farthest.matrix().norm() <= radius && (count += countAt(n)) >= k) return true;
+        }
         return false;
     }
     // The points in p's cell and the 26 around it.
@@ -174,7 +174,8 @@ std::vector<char> testThroughSample(const PointList& points, const OutlierParame
     for (std::size_t i = 0; i < n; ++i) {
         if (sampled[i]) sample.push_back(points[i]);
     }
-    const TestedPoints tested = testEveryPoint(sample, parameters);
+    const PointIndex sampleIndex(sample);
+    const TestedPoints tested = testEveryPoint(sample, sampleIndex, parameters);
     PointList passed;
     for (std::size_t s = 0; s < sample.size(); ++s) {
         if (!tested.outlier[s]) passed.push_back(sample[s]);
@@ -188,8 +189,8 @@ std::vector<char> testThroughSample(const PointList& points, const OutlierParame
     // passing points lie within the isolation distance. Two grids answer for most points
     // without a search: k passing points in cubes (diagonal: that distance) that lie whole
     // within that distance of the point are close enough; fewer than k in its 27 cells
-    // (side: that distance) are too few. The rest, points beside the surface, ask the
-    // passing points' index.
+    // (side: that distance) are too few. The rest, points beside the surface, count the
+    // passing points among the sample's within that distance.
     const Eigen::AlignedBox3d box = boundingBox(points);
     const CellCounts cubes(passed, tested.reach / std::sqrt(3.0), box);
     const CellCounts cells(passed, tested.reach, box);
@@ -212,16 +213,17 @@ std::vector<char> testThroughSample(const PointList& points, const OutlierParame
         if (outlier[i] == kUndecided) undecided.emplace_back(cells.cellKey(points[i]), i);
     }
     parallelSort(undecided.begin(), undecided.end());
-    const PointIndex passedIndex(passed);
 #pragma omp parallel
     {
         std::vector<int> found;
 #pragma omp for schedule(static)
         for (long u = 0; u < long(undecided.size()); ++u) {
             const std::size_t i = undecided[std::size_t(u)].second;
-            passedIndex.nearest(points[i], kNeighbours, found);
-            outlier[i] = found.size() < std::size_t(kNeighbours) ||
-                         (passed[std::size_t(found.back())] - points[i]).norm() > tested.reach;
+            sampleIndex.withinRadius(points[i], tested.reach, found);
+            const auto close = std::count_if(found.begin(), found.end(), [&](int s) {
+                return !tested.outlier[std::size_t(s)] && (sample[std::size_t(s)] - points[i]).norm() <= tested.reach;
+            });
+            outlier[i] = close < kNeighbours;
         }
     }
     return outlier;
@@ -243,7 +245,8 @@ std::vector<char> findOutliers(const PointList& points, const OutlierParameters&
     checkOutlierParameters(parameters);
     if (!parameters.detect) return std::vector<char>(points.size(), 0);
     if (points.size() > parameters.statisticsSample) return testThroughSample(points, parameters);
-    return testEveryPoint(points, parameters).outlier;
+    const PointIndex index(points);
+    return testEveryPoint(points, index, parameters).outlier;
 }
 
 }  // namespace pcskeleton
