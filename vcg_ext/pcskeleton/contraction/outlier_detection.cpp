@@ -107,14 +107,27 @@ TestedPoints testEveryPoint(const PointList& points, const PointIndex& index, co
 
 // How many of some points each cell of a grid holds. Without a usable grid (a zero or too
 // small side for the box) it answers "don't know": no points in a cell, all of them around
-// it, which sends every point to the exact search.
+// it, which sends every point to the exact search. The cells come from a sample and the
+// queries from every point of a large cloud, in no order in space, so they are kept in one
+// open-addressed array, where a lookup touches one place in memory (a node-based
+// std::unordered_map touches two or three; Boost's flat maps came after the Boost that
+// Debian 12 has).
 class CellCounts {
 public:
     CellCounts(const PointList& points, double side, const Eigen::AlignedBox3d& box)
         : origin_(box.min() - Point::Constant(side)), side_(side), total_(points.size()) {
         usable_ = side > 0.0 && (box.sizes().maxCoeff() / side) + 3.0 < double(kCellsPerAxis);
         if (!usable_) return;
-        for (const Point& p : points) ++counts_[key(cell(p))];
+        std::unordered_map<std::uint64_t, std::uint32_t> counts;
+        for (const Point& p : points) ++counts[key(cell(p))];
+        std::size_t capacity = 16;
+        while (capacity < 2 * counts.size()) capacity *= 2;
+        slots_.assign(capacity, Slot{});
+        for (const auto& [cellKey, count] : counts) {
+            std::size_t s = home(cellKey);
+            while (slots_[s].key != kEmpty) s = (s + 1) & (capacity - 1);
+            slots_[s].key = cellKey, slots_[s].count = count;
+        }
     }
     // An order of the cells: row by row, layer by layer.
     std::uint64_t cellKey(const Point& p) const { return usable_ ? key(cell(p)) : 0; }
@@ -126,8 +139,7 @@ public:
         std::size_t count = 0;
         // p's own cell first: on a surface it often holds k points by itself.
         for (int o = 0; o < 27; ++o) {
-            const int shifted = (o + 13) % 27;
-            const Eigen::Array3i n = c + Eigen::Array3i(shifted % 3 - 1, shifted / 3 % 3 - 1, shifted / 9 - 1);
+            const Eigen::Array3i n = c + offset(o);
             const Eigen::Array3d low = origin_.array() + n.cast<double>() * side_;
             const Eigen::Array3d high = low + side_;
             const Eigen::Array3d farthest = (p.array() - low).abs().max((high - p.array()).abs());
@@ -140,27 +152,43 @@ public:
         if (!usable_) return total_;
         const Eigen::Array3i c = cell(p);
         std::size_t count = 0;
-        for (int dx = -1; dx <= 1; ++dx)
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dz = -1; dz <= 1; ++dz) count += countAt(c + Eigen::Array3i(dx, dy, dz));
+        for (int o = 0; o < 27; ++o) count += countAt(c + offset(o));
         return count;
     }
 
 private:
     static constexpr int kCellsPerAxis = 1 << 21;
+    static constexpr std::uint64_t kEmpty = ~std::uint64_t(0);  // no cell's key: 63 bits at most
+    struct Slot {
+        std::uint64_t key = kEmpty;
+        std::uint32_t count = 0;
+    };
+    // The 27 cells around a cell, its own first.
+    static Eigen::Array3i offset(int o) {
+        const int shifted = (o + 13) % 27;
+        return Eigen::Array3i(shifted % 3 - 1, shifted / 3 % 3 - 1, shifted / 9 - 1);
+    }
     Eigen::Array3i cell(const Point& p) const { return ((p - origin_) / side_).array().floor().cast<int>(); }
     static std::uint64_t key(const Eigen::Array3i& c) {
         return std::uint64_t(c[0]) | std::uint64_t(c[1]) << 21 | std::uint64_t(c[2]) << 42;
     }
+    // Fibonacci hashing: neighbouring cells, whose keys differ in a few bits, land far apart.
+    std::size_t home(std::uint64_t k) const { return std::size_t((k * 0x9E3779B97F4A7C15ull) >> 32) & (slots_.size() - 1); }
+    const Slot* find(std::uint64_t k) const {
+        for (std::size_t s = home(k);; s = (s + 1) & (slots_.size() - 1)) {
+            if (slots_[s].key == k) return &slots_[s];
+            if (slots_[s].key == kEmpty) return nullptr;
+        }
+    }
     std::size_t countAt(const Eigen::Array3i& c) const {
-        const auto found = counts_.find(key(c));
-        return found == counts_.end() ? 0 : found->second;
+        const Slot* found = find(key(c));
+        return found ? found->count : 0;
     }
     Point origin_;
     double side_;
     std::size_t total_;
     bool usable_ = false;
-    std::unordered_map<std::uint64_t, std::size_t> counts_;
+    std::vector<Slot> slots_;  // a power of two, at most half full
 };
 
 // The tests run on a uniform sample; every other point is an outlier when fewer than k of
