@@ -255,9 +255,9 @@ std::vector<Subject> sheetAndMixedShapes() {
                                       {Point(0.7, 0, 0.36), Point(0.7, 0, 0)}},
                                      0.08}},
                                    1, 1));
-    // A ring so thick that its hole (0.28 across, 5 node spacings) is narrower than half its
-    // tube (0.72 across): contraction flattens it into an annulus that then shrinks onto its
-    // centre, and the hole is lost (docs/benchmarks.md, "A thick ring loses its hole").
+    // A ring so thick that its hole (0.28 across) is narrower than half its tube (0.72
+    // across): as contraction flattens it, its inner wall moves into the hole, and the hole
+    // is lost (docs/benchmarks.md, "A thick ring loses its hole").
     subjects.push_back(tubeSubject("thick ring", false, {{shapes::circle(Point::Zero(), 0.5), 0.36}}, 1, 0));
     return subjects;
 }
