@@ -318,7 +318,7 @@ const char* const kUsage =
     "                        [--gap-limit X] [--loop-opening X] [--loop-clearance F] [--full-resolution]\n"
     "                        [--gap-stretch X] [--min-hole X] [--k N] [--denoise N]\n"
     "                        [--contracted-points N] [--shape TEXT] [--scans DIR] [--check-invariant]\n"
-    "                        [--seed S]\n"
+    "                        [--seed S] [--medial-pull W]\n"
     "       bench_robustness --outliers [POINTS [ISOLATION [CLUSTER [LOCAL]]]]\n"
     "       bench_robustness --write SHAPE CONDITION FILE [POINTS]\n"
     "The table of every shape under every scan defect (the default), the outlier detector's scores, or one\n"
@@ -333,7 +333,7 @@ int main(int argc, char** argv) {
     const std::set<std::string> optionsWithValue{"--contracted-points", "--shape", "--gap-limit", "--loop-opening",
                                                  "--loop-clearance", "--k",                 "--denoise",
                                                  "--gap-stretch",      "--scans",         "--min-hole",
-                                                 "--seed"};
+                                                 "--seed",             "--medial-pull"};
     for (const std::string& arg : args) {
         if (arg == "--help" || arg == "-h") {
             std::printf("%s", kUsage);
@@ -405,6 +405,7 @@ int main(int argc, char** argv) {
     numberAfter("--loop-clearance", pipeline.graph.refinementLimits.minClearance);
     numberAfter("--gap-stretch", pipeline.graph.refinementLimits.gapStretch);
     numberAfter("--min-hole", pipeline.graph.refinementLimits.minHole);
+    numberAfter("--medial-pull", pipeline.contraction.medialPull);
     double seedValue = 11;
     numberAfter("--seed", seedValue);
     const auto seed = std::uint32_t(seedValue);

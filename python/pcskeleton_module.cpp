@@ -515,6 +515,8 @@ py::dict reportDict(const SkeletonResult& r) {
     d["sheet_patches"] = q.sheets ? q.sheets->patches : 0;  // flat patches moved onto their medial axes
     // 1-ring neighbours across a gap left out (facing_walls.h); -1 when the facing walls are not separated
     d["facing_neighbours_left_out"] = contraction.facingNeighboursLeftOut;
+    // points pulled towards their medial centre (medial_pull.h); -1 when there is no medial pull
+    d["medial_pull_points"] = contraction.medialPullPoints;
     py::list warnings;
     for (const QualityWarning& w : q.warnings()) {
         py::dict warning = problemDict(w.problem);

@@ -87,6 +87,16 @@ def test_facing_walls_are_counted_and_facing_walls_false_keeps_every_neighbour(t
     assert off.report["topology"]["cycles"] == 1
 
 
+def test_medial_pull_keeps_the_loop_of_a_ring_with_a_narrow_hole_and_is_counted(torus_skeleton):
+    thick_ring = shapes.torus(6000, major=0.5, minor=0.36)
+    pulled = pcskeleton.skeletonize(thick_ring, medial_pull=1.0)
+    assert pulled.report["medial_pull_points"] > len(thick_ring) // 2
+    assert "Medial pull: " in pulled.report["text"]
+    assert pulled.report["topology"]["cycles"] == 1
+    assert torus_skeleton.report["medial_pull_points"] == -1
+    assert "Medial pull" not in torus_skeleton.report["text"]
+
+
 def test_noisy_y_keeps_three_tips():
     points = shapes.y_shape() + np.random.default_rng(3).normal(0, 0.005, (4500, 3))
     assert pcskeleton.skeletonize(points).report["topology"]["tips"] == 3

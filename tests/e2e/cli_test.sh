@@ -44,6 +44,11 @@ grep -q "^Facing walls: [0-9]* neighbours\? across a gap left out of the 1-rings
   || { cat knot.log; fail "the report does not count the facing walls' neighbours"; }
 "$PCSKELETON" $M/knot.off -o knot_facing.ply --no-facing-walls --report knot_facing.txt --quiet
 grep -q "^Facing walls: off.$" knot_facing.txt || { cat knot_facing.txt; fail "--no-facing-walls: the report does not say so"; }
+# --medial-pull: the report counts the points pulled; without it there is no such line.
+"$PCSKELETON" $M/knot.off -o knot_medial.ply --medial-pull 1 --report knot_medial.txt --quiet
+grep -qE "^Medial pull: [1-9][0-9]* points pulled towards their medial centre" knot_medial.txt \
+  || { cat knot_medial.txt; fail "--medial-pull: the report does not count the points pulled"; }
+! grep -q "^Medial pull" knot_facing.txt || fail "the report has a medial pull line without --medial-pull"
 grep -q "^Tip extension: [0-9]* limbs extended" elephant.log || { cat elephant.log; fail "the elephant's limbs were not extended"; }
 
 # --report writes the same report to a file; an unconverged run warns and names the fix.
@@ -230,6 +235,7 @@ explains "--refine, --no-refine" "Clean what noise leaves" "[on"
 explains "--sheets, --no-sheets" "onto its medial axis within its plane" "[on"
 explains "--keep-outliers, --no-keep-outliers" "Contract every point" "[off"
 explains "--facing-walls, --no-facing-walls" "on another part's wall that faces its own across a gap" "[on"
+explains "--medial-pull X" "towards the centre of the largest empty ball touching it from inside" "(the paper's). [0"
 
 # --paper means one thing: the paper's pipeline first, then every other option, in any order.
 "$PCSKELETON" $M/knot.off -o refine_paper.ply --refine --paper --quiet --force

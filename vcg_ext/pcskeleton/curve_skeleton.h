@@ -78,15 +78,16 @@ struct SkeletonParameters {
     ResolutionParameters resolution;
 
     // Turns off every step that is not the paper's (outlier detection, denoising, the facing
-    // walls, the stretched-link limit, the sheets' medial axes, re-centring, refinement, gap bridging,
-    // tip extension, the subsample) and takes its rule for an automatic k, keeping every
-    // other setting.
+    // walls, the medial pull, the stretched-link limit, the sheets' medial axes, re-centring,
+    // refinement, gap bridging, tip extension, the subsample) and takes its rule for an
+    // automatic k, keeping every other setting.
     void keepToThePaper() {
         resolution.maxContractedPoints = 0;
         contraction.papersNeighbourRule = true;
         contraction.outliers.detect = false;
         contraction.denoisingPasses = 0;
         contraction.separateFacingWalls = false;
+        contraction.medialPull = 0;
         graph.collapseSheets = false;
         graph.recentre = false;
         graph.refine = false;

@@ -28,6 +28,7 @@ void visitField(Settings& s, Parameter id, Field&& visit) {
         case Parameter::LaplacianRowLimit: return visit(c.laplacianRowLimit);
         case Parameter::MaxIterations: return visit(c.maxIterations);
         case Parameter::TerminationThreshold: return visit(c.terminationThreshold);
+        case Parameter::MedialPull: return visit(c.medialPull);
         case Parameter::OutlierDetection: return visit(c.outliers.detect);
         case Parameter::OutlierIsolation: return visit(c.outliers.isolationFactor);
         case Parameter::OutlierLocalFactor: return visit(c.outliers.localFactor);

@@ -45,6 +45,7 @@ void checkContractionParameters(const ContractionParameters& p) {
     require(weight(p.maxContractionWeight), Parameter::MaxContractionWeight, "must be a positive number up to 1e8.");
     require(weight(p.maxAttractionWeight), Parameter::MaxAttractionWeight, "must be a positive number up to 1e8.");
     require(weight(p.laplacianRowLimit), Parameter::LaplacianRowLimit, "must be a positive number up to 1e8.");
+    require(p.medialPull == 0 || weight(p.medialPull), Parameter::MedialPull, "must be 0 (none) or a positive number up to 1e8.");
     require(p.maxIterations >= 1, Parameter::MaxIterations, "must be at least 1.");
     // The extent ratio lies between 0 and 1: a threshold of 1 or more stops after one iteration.
     require(p.terminationThreshold >= 0 && p.terminationThreshold < 1, Parameter::TerminationThreshold,
@@ -113,6 +114,7 @@ LaplacianContraction::LaplacianContraction(const PointList& input, const Contrac
                                                                          : 1.0 / (5.0 * meanExtent);
     contractionWeight_ = initialContractionWeight_;
     attractionWeights_.assign(positions_.size(), parameters_.initialAttractionWeight);
+    if (parameters_.medialPull > 0) medialTargets_ = estimateMedialTargets(positions_);
 }
 
 LaplacianContraction::~LaplacianContraction() = default;
@@ -129,6 +131,14 @@ bool LaplacianContraction::solve(double contractionWeight, PointList& next) {
         const double w2 = attractionWeights_[i] * attractionWeights_[i];
         system.valuePtr()[normalEquations_->diagonalSlot(int(i))] += w2;
         rhs.row(i) = w2 * positions_[i].transpose();
+    }
+    if (!medialTargets_.empty()) {
+        const double m2 = parameters_.medialPull * parameters_.medialPull;
+        for (Eigen::Index i = 0; i < n; ++i) {
+            if (!medialTargets_.found[std::size_t(i)]) continue;
+            system.valuePtr()[normalEquations_->diagonalSlot(int(i))] += m2;
+            rhs.row(i) += m2 * medialTargets_.centres[std::size_t(i)].transpose();
+        }
     }
     Eigen::MatrixXd solution;
     try {
@@ -219,6 +229,7 @@ ContractionOutcome ContractionResult::outcome() const {
     outcome.denoisingPasses = denoisingPasses;
     outcome.surfaceNoise = surfaceNoise;
     outcome.facingNeighboursLeftOut = facingNeighboursLeftOut;
+    outcome.medialPullPoints = medialPullPoints;
     return outcome;
 }
 
@@ -233,6 +244,7 @@ ContractionResult LaplacianContraction::result() const {
     result.denoisingPasses = denoising_.passes;
     result.surfaceNoise = denoising_.surfaceNoise;
     result.facingNeighboursLeftOut = facingNeighboursLeftOut(parameters_, rings_);
+    result.medialPullPoints = parameters_.medialPull > 0 ? long(medialTargets_.count) : -1;
     return result;
 }
 

@@ -8,6 +8,8 @@
 // i's 1-ring. It stops when, once the contraction has started, the total 1-ring extent
 // shrinks by less than the threshold (relative to the start) in an iteration; on the
 // iteration limit; or on a numerical failure (the last good positions are kept).
+// With a medial pull W_M (not in the paper, off by default), the pulled points' rows also
+// get W_M² on the diagonal and W_M² m on the right, m their medial centre (medial_pull.h).
 //
 // One-call use:   ContractionResult r = LaplacianContraction::run(points);
 // Step by step:   LaplacianContraction c(points);
@@ -15,6 +17,7 @@
 #pragma once
 
 #include "pcskeleton/contraction/cotangent_laplacian.h"
+#include "pcskeleton/contraction/medial_pull.h"
 #include "pcskeleton/contraction/one_ring.h"
 #include "pcskeleton/contraction/point_denoising.h"
 #include "pcskeleton/contraction/point_cloud_input.h"
@@ -48,6 +51,8 @@ struct ContractionParameters {
                                             // noisy clouds, 0 = never (the paper's), 1..10 passes
     bool separateFacingWalls = true;        // 1-rings leave out neighbours on a wall facing the
                                             // point's own (facing_walls.h); off in the paper
+    double medialPull = 0.0;                // W_M, the pull towards each point's medial centre
+                                            // (medial_pull.h); 0 = none, as in the paper
     LinearSolver solver = LinearSolver::Automatic;  // no BLAS up to 20K points: the same on every CPU
 };
 
@@ -78,6 +83,7 @@ struct ContractionOutcome {
     int denoisingPasses = 0;   // of the copy whose 1-rings were contracted (point_denoising.h)
     double surfaceNoise = -1;  // measured for the automatic choice, else -1
     long facingNeighboursLeftOut = -1;  // of the 1-rings (facing_walls.h); -1 when not separated
+    long medialPullPoints = -1;  // points pulled towards a medial centre (medial_pull.h); -1 when off
 };
 
 struct ContractionResult {
@@ -90,6 +96,7 @@ struct ContractionResult {
     int denoisingPasses = 0;
     double surfaceNoise = -1;  // measured for the automatic choice, else -1
     long facingNeighboursLeftOut = -1;  // of the 1-rings (facing_walls.h); -1 when not separated
+    long medialPullPoints = -1;  // points pulled towards a medial centre (medial_pull.h); -1 when off
 
     ContractionOutcome outcome() const;
 };
@@ -161,6 +168,7 @@ private:
     double contractionWeight_ = 0.0, initialContractionWeight_ = 0.0;
     double neighbourhoodSeconds_ = 0.0;
     DenoisingChoice denoising_;
+    MedialTargets medialTargets_;  // empty without a medial pull
     std::vector<IterationReport> history_;
     StopReason stopReason_ = StopReason::NotStopped;
     bool contractionStarted_ = false;  // some iteration shrank the rings by the threshold

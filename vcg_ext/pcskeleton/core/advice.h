@@ -23,6 +23,7 @@ enum class Parameter {
     LaplacianRowLimit,
     MaxIterations,
     TerminationThreshold,
+    MedialPull,
     OutlierDetection,
     OutlierIsolation,
     OutlierLocalFactor,

@@ -53,6 +53,12 @@ const std::vector<ParameterInfo> kTable = {
      "the termination threshold", "Termination threshold", "terminationThreshold",
      "Contraction stops when the total 1-ring size shrank by less than this fraction of its initial value in the "
      "last iteration."},
+    {Parameter::MedialPull, "medial_pull", V::Real, S::Contraction, kAdvanced, kStraight,
+     "the medial pull W_M", "Medial pull W_M", kNotInTheDialogs,
+     "Pull each point during contraction towards the centre of the largest empty ball touching it from inside "
+     "(its medial point), with this weight beside W_H; 1 if a ring or handle whose hole is narrow next to its tube "
+     "comes out without its loop. It costs time and can pull points of close parts off their own part's middle. Points whose inside is open (a one-sided scan) are not pulled. 0 = no pull "
+     "(the paper's)."},
 
     // ---- Which points are contracted (not in the paper) ----
     {Parameter::OutlierDetection, "keep_outliers", V::Switch, S::PointCleaning, kCommon, kInverted,

@@ -240,6 +240,10 @@ std::string describeFindings(const SkeletonQuality& q) {
         else s << counted(std::size_t(contraction.facingNeighboursLeftOut), "neighbour", "neighbours")
                << " across a gap left out of the 1-rings (on another part's wall, facing the point's own).\n";
     }
+    if (q.contraction && contraction.medialPullPoints >= 0) {
+        s << "Medial pull: " << counted(std::size_t(contraction.medialPullPoints), "point", "points")
+          << " pulled towards their medial centre (the others' inside is open).\n";
+    }
     if (q.inputPoints > q.points) {
         s << "Input: " << counted(q.inputPoints, "point", "points") << ", " << counted(q.inputOutliers, "outlier", "outliers")
           << " set aside (no node); multi-resolution: " << q.points << " contracted";
