@@ -113,12 +113,7 @@ MedialTargets estimateMedialTargets(const PointList& points) {
     LocalSurfaces surfaces = localSurfaces(points, index);
     orientNormals(points, surfaces.normals);
 
-    Point low = points.front(), high = points.front();
-    for (const Point& p : points) {
-        low = low.cwiseMin(p);
-        high = high.cwiseMax(p);
-    }
-    const double largest = kLargestBallShare * (high - low).norm();
+    const double largest = kLargestBallShare * boundingBox(points).diagonal().norm();
 
     const std::ptrdiff_t n = std::ptrdiff_t(points.size());
     std::size_t count = 0;
