@@ -48,6 +48,10 @@
 //        bench_robustness [POINTS] --check-invariant
 //                                       exits with 1 if any node of any case (the suite's and the
 //                                       paper's scans) is away from its data (data_support.h)
+//        bench_robustness [POINTS] --jobs N
+//                                       N cases at a time, each in its own process (1 by
+//                                       default); the time column then counts shared cores,
+//                                       the rest of the table is the same
 //        bench_robustness [POINTS] --seed S
 //                                       the samples' seed (11 by default, as every table in
 //                                       docs/): another seed tells a rule from a lucky sample
@@ -67,6 +71,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <deque>
 #include <cmath>
 #include <random>
 #include <cstdlib>
@@ -318,7 +323,7 @@ const char* const kUsage =
     "                        [--gap-limit X] [--loop-opening X] [--loop-clearance F] [--full-resolution]\n"
     "                        [--gap-stretch X] [--min-hole X] [--k N] [--denoise N]\n"
     "                        [--contracted-points N] [--shape TEXT] [--scans DIR] [--check-invariant]\n"
-    "                        [--seed S] [--medial-pull W]\n"
+    "                        [--seed S] [--medial-pull W] [--jobs N]\n"
     "       bench_robustness --outliers [POINTS [ISOLATION [CLUSTER [LOCAL]]]]\n"
     "       bench_robustness --write SHAPE CONDITION FILE [POINTS]\n"
     "The table of every shape under every scan defect (the default), the outlier detector's scores, or one\n"
@@ -333,7 +338,7 @@ int main(int argc, char** argv) {
     const std::set<std::string> optionsWithValue{"--contracted-points", "--shape", "--gap-limit", "--loop-opening",
                                                  "--loop-clearance", "--k",                 "--denoise",
                                                  "--gap-stretch",      "--scans",         "--min-hole",
-                                                 "--seed",             "--medial-pull"};
+                                                 "--seed",             "--medial-pull",   "--jobs"};
     for (const std::string& arg : args) {
         if (arg == "--help" || arg == "-h") {
             std::printf("%s", kUsage);
@@ -409,6 +414,12 @@ int main(int argc, char** argv) {
     double seedValue = 11;
     numberAfter("--seed", seedValue);
     const auto seed = std::uint32_t(seedValue);
+    double jobsValue = 1;
+    numberAfter("--jobs", jobsValue);
+    if (!(jobsValue >= 1 && jobsValue <= 64 && jobsValue == std::floor(jobsValue))) {
+        return refuse("--jobs needs a whole number from 1 to 64");
+    }
+    const auto jobs = std::size_t(jobsValue);
     double neighbours = pipeline.contraction.neighbourCount, denoising = pipeline.contraction.denoisingPasses;
     numberAfter("--k", neighbours);
     numberAfter("--denoise", denoising);
@@ -440,34 +451,51 @@ int main(int argc, char** argv) {
     // Per condition, the tuning half ([0]) and the held-out half ([1]).
     std::map<std::string, std::array<Tally, 2>> byCondition;
     int away = 0;
+    const std::vector<Condition> scanConditions = conditions();
+    std::vector<std::pair<const Subject*, const Condition*>> cases;
     for (const Subject& subject : subjects) {
         if (subject.name.find(onlyShape) == std::string::npos) continue;
-        for (const Condition& condition : conditions()) {
-            Row row;
-            double peak = 0;
-            if (!runInChild([&] { return measure(subject, condition, n, seed, pipeline, !checkInvariant); }, row, peak)) {
-                std::printf("%-24s %-16s failed\n", subject.name.c_str(), condition.name);
-                continue;
-            }
-            const std::string gap = row.gapBefore < 0 ? "-" : number(row.gapBefore) + "->" + number(row.gapAfter);
-            std::printf("%-24s %-16s %6d %6s %6s %5s %6s %6s %6s%% %13s %4d %4d %5.1fs\n", subject.name.c_str(),
-                        condition.name, row.points, found(row.cycles, subject.cycles).c_str(),
-                        found(row.tips, subject.tips).c_str(), found(row.components, subject.components).c_str(),
-                        number(row.meanDistance).c_str(), number(row.maxDistance).c_str(),
-                        number(row.inside, "%.0f").c_str(), gap.c_str(), row.away, row.warnings, row.seconds);
-            std::fflush(stdout);
-            Tally& t = byCondition[condition.name][subject.heldOut ? 1 : 0];
-            t.away += row.away;
-            away += row.away;
-            ++t.cases;
-            const bool cyclesAndParts = row.cycles == subject.cycles && row.components == subject.components;
-            t.partsRight += row.components == subject.components;
-            t.right += cyclesAndParts && (subject.tips == kUnknown || row.tips == subject.tips);
-            t.nearlyRight += cyclesAndParts && (subject.tips == kUnknown || std::abs(row.tips - subject.tips) <= 1);
-            if (row.gapBefore >= 0) t.gapBefore += row.gapBefore, t.gapAfter += row.gapAfter, ++t.gaps;
-            if (row.meanDistance >= 0) t.meanDistance += row.meanDistance, ++t.distances;
-            if (row.inside >= 0) t.inside += row.inside, ++t.insides;
+        for (const Condition& condition : scanConditions) cases.emplace_back(&subject, &condition);
+    }
+    // Up to `jobs` cases run at a time; their rows are printed in the suite's order.
+    std::deque<ChildCase> running;
+    std::size_t started = 0;
+    for (std::size_t next = 0; next < cases.size(); ++next) {
+        for (; started < cases.size() && running.size() < jobs; ++started) {
+            const auto [subject, condition] = cases[started];
+            running.push_back(startInChild<Row>(
+                [&, subject = subject, condition = condition] {
+                    return measure(*subject, *condition, n, seed, pipeline, !checkInvariant);
+                }));
         }
+        const Subject& subject = *cases[next].first;
+        const Condition& condition = *cases[next].second;
+        Row row;
+        double peak = 0;
+        const bool finished = finishInChild(running.front(), row, peak);
+        running.pop_front();
+        if (!finished) {
+            std::printf("%-24s %-16s failed\n", subject.name.c_str(), condition.name);
+            continue;
+        }
+        const std::string gap = row.gapBefore < 0 ? "-" : number(row.gapBefore) + "->" + number(row.gapAfter);
+        std::printf("%-24s %-16s %6d %6s %6s %5s %6s %6s %6s%% %13s %4d %4d %5.1fs\n", subject.name.c_str(),
+                    condition.name, row.points, found(row.cycles, subject.cycles).c_str(),
+                    found(row.tips, subject.tips).c_str(), found(row.components, subject.components).c_str(),
+                    number(row.meanDistance).c_str(), number(row.maxDistance).c_str(),
+                    number(row.inside, "%.0f").c_str(), gap.c_str(), row.away, row.warnings, row.seconds);
+        std::fflush(stdout);
+        Tally& t = byCondition[condition.name][subject.heldOut ? 1 : 0];
+        t.away += row.away;
+        away += row.away;
+        ++t.cases;
+        const bool cyclesAndParts = row.cycles == subject.cycles && row.components == subject.components;
+        t.partsRight += row.components == subject.components;
+        t.right += cyclesAndParts && (subject.tips == kUnknown || row.tips == subject.tips);
+        t.nearlyRight += cyclesAndParts && (subject.tips == kUnknown || std::abs(row.tips - subject.tips) <= 1);
+        if (row.gapBefore >= 0) t.gapBefore += row.gapBefore, t.gapAfter += row.gapAfter, ++t.gaps;
+        if (row.meanDistance >= 0) t.meanDistance += row.meanDistance, ++t.distances;
+        if (row.inside >= 0) t.inside += row.inside, ++t.insides;
     }
     std::printf("\nSummary per condition (means over the shapes that have the measure; right topology: cycles,\n"
                 "parts and tips as the shape's; tips +-1: the same with one tip more or fewer allowed; parts: the\n"
