@@ -3,8 +3,9 @@
 #   1. installs what is missing, builds build/ and runs every test there with CTest (unit
 #      tests, the plugin loaded from its .so, meshlabserver and the GUI under Xvfb);
 #   2. builds the library, the CLI and the unit tests with AddressSanitizer and
-#      UndefinedBehaviorSanitizer (leaks included) in build-sanitize/ and runs them again
-#      there: any sanitizer report fails the test that triggered it;
+#      UndefinedBehaviorSanitizer (leaks included) in build-sanitize/, a build that starts
+#      in the background with 1's tests, and runs them again there: any sanitizer report
+#      fails the test that triggered it;
 #   3. makes the Debian packages and checks them on a clean Debian of this release
 #      (scripts/make_packages.sh, scripts/test_packages.sh);
 #   4. builds and tests the plugins against MeshLab 2022.02 and 2025.07 (meshlab-run, the GUI
@@ -33,6 +34,7 @@ stage() {
 }
 stage_summary() {
   local status=$? i
+  stop_sanitize_build
   stop_environments
   stage_seconds+=($((SECONDS - stage_start)))
   echo "== Time per stage (seconds)"
@@ -87,6 +89,37 @@ stop_environments() {
   rm -f "$environments_log"
 }
 
+# The sanitizer build of stage 2 starts with the main build's tests, at the lowest priority:
+# they run one at a time, and the build takes what they leave of the cores (as the
+# environments' job does, at a higher priority than the build). When they are done it gets
+# the usual priority back where renice may raise it (as root). Its own process group: a
+# failed run stops it.
+sanitize_pid="" sanitize_log=""
+start_sanitize_build() {
+  [ "${PCSKELETON_SANITIZE:-1}" != 0 ] || return 0
+  cmake -S "$ROOT" -B "$ROOT/build-sanitize" -DCMAKE_BUILD_TYPE=Release -DPCSKELETON_SANITIZE=ON \
+    -DPCSKELETON_BUILD_PLUGINS=OFF -DPCSKELETON_BUILD_BENCH=OFF -DPCSKELETON_BUILD_PYTHON=OFF >/dev/null
+  sanitize_log="$(mktemp)"
+  set -m
+  nice -n 19 cmake --build "$ROOT/build-sanitize" -j"$(nproc)" >"$sanitize_log" 2>&1 &
+  sanitize_pid=$!
+  set +m
+}
+finish_sanitize_build() {
+  local status=0
+  renice -n 0 -g "$sanitize_pid" >/dev/null 2>&1 || true
+  wait "$sanitize_pid" || status=$?
+  sanitize_pid=""
+  cat "$sanitize_log"; rm -f "$sanitize_log"
+  [ $status -eq 0 ] || { echo "FAIL: the sanitizer build (exit status $status)"; exit 1; }
+}
+stop_sanitize_build() {
+  [ -n "$sanitize_pid" ] || return 0
+  kill -- -"$sanitize_pid" 2>/dev/null || true
+  wait "$sanitize_pid" 2>/dev/null || true
+  rm -f "$sanitize_log"
+}
+
 stage "Setup and the main build (build/)"
 bash "$ROOT/scripts/build.sh"
 
@@ -115,13 +148,12 @@ fi
 start_environments "${environments[@]}"
 
 stage "The main build's tests"
+start_sanitize_build
 (cd "$ROOT/build" && ctest --output-on-failure -j1 "$@")
 
 if [ "${PCSKELETON_SANITIZE:-1}" != 0 ]; then
   stage "The library, CLI and unit tests under AddressSanitizer + UndefinedBehaviorSanitizer (build-sanitize/)"
-  cmake -S "$ROOT" -B "$ROOT/build-sanitize" -DCMAKE_BUILD_TYPE=Release -DPCSKELETON_SANITIZE=ON \
-    -DPCSKELETON_BUILD_PLUGINS=OFF -DPCSKELETON_BUILD_BENCH=OFF -DPCSKELETON_BUILD_PYTHON=OFF >/dev/null
-  cmake --build "$ROOT/build-sanitize" -j"$(nproc)"
+  finish_sanitize_build
   # Two at a time: no GUI here, and the instrumented tests leave a core idle between
   # their parallel parts (the e2e timeouts of this build allow for the sharing).
   (cd "$ROOT/build-sanitize" && ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1" \
