@@ -31,21 +31,25 @@ PointList inputPoints(const NormalizedCloud& cloud) {
 }
 
 // Steps 4-5, refinement, tip extension and quality on contracted positions of the distinct
-// points (normalised frame). Fills result.skeleton, result.quality and the seconds of
-// thinning, embedding and finishing.
-void thinAndEmbed(const NormalizedCloud& cloud, const OneRings& rings, const PointList& contracted,
-                  const SkeletonGraphParameters& parameters, SkeletonResult& result, const ProgressCallback& progress) {
+// points (normalised frame); `start`: where contraction started them (the denoised copy of a
+// noisy cloud). Fills result.skeleton, result.quality and the seconds of thinning, embedding
+// and finishing.
+void thinAndEmbed(const NormalizedCloud& cloud, const PointList& start, const OneRings& rings,
+                  const PointList& contracted, const SkeletonGraphParameters& parameters, SkeletonResult& result,
+                  const ProgressCallback& progress) {
     checkSkeletonGraphParameters(parameters);
     Stopwatch stage;
     const double radius = parameters.nodeSpacing * cloud.diagonal;
     const double maxLinkLength = parameters.linkLimit > 0 ? parameters.linkLimit * radius
                                                           : std::numeric_limits<double>::infinity();
-    // Flat sheets that contraction cannot thin, onto their medial axes first.
+    // Flat sheets that contraction cannot thin, onto their medial axes first. Whether a sheet
+    // is flat is judged where contraction started: noise that denoising took out of a plate
+    // would hide its plane (docs/benchmarks.md, "Noisy plates").
     PointList collapsed;
     std::optional<SheetCollapseReport> sheets;
     if (parameters.collapseSheets) {
         collapsed = contracted;
-        sheets = collapseSheets(cloud.points, collapsed, rings, radius);
+        sheets = collapseSheets(start, collapsed, rings, radius);
     }
     const PointList& thinnedPoints = parameters.collapseSheets ? collapsed : contracted;
     const ThinnedGraph thinned = thinContractedPoints(cloud.points, thinnedPoints, rings, radius, maxLinkLength, progress);
@@ -160,8 +164,8 @@ SkeletonResult skeletonFromContraction(const LaplacianContraction& contraction, 
     result.contraction = contraction.result();
     result.seconds.neighbourhoods = contraction.neighbourhoodSeconds();
     for (const IterationReport& r : contraction.history()) result.seconds.contraction += r.seconds;
-    thinAndEmbed(contraction.cloud(), contraction.rings(), contraction.normalizedPositions(), parameters, result,
-                 progress);
+    thinAndEmbed(contraction.cloud(), contraction.startPositions(), contraction.rings(),
+                 contraction.normalizedPositions(), parameters, result, progress);
     return result;
 }
 
@@ -316,7 +320,8 @@ SkeletonResult skeletonFromContractedPoints(const PointList& input, const PointL
         if (!cloud.isOutlier(i)) contractedUnique[cloud.uniqueIndex[i]] = cloud.toNormalizedFrame(contracted[i]);
     }
     result.contraction.contracted = contracted;
-    thinAndEmbed(cloud, start.rings, contractedUnique, parameters, result, progressRange(progress, 50, 100));
+    thinAndEmbed(cloud, start.positions, start.rings, contractedUnique, parameters, result,
+                 progressRange(progress, 50, 100));
     return result;
 }
 

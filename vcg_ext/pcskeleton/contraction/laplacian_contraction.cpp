@@ -100,6 +100,7 @@ LaplacianContraction::LaplacianContraction(const PointList& input, const Contrac
     cloud_ = std::move(start.cloud);
     denoising_ = start.denoising;
     positions_ = std::move(start.positions);
+    if (denoising_.passes > 0) denoisedStart_ = positions_;
     rings_ = std::move(start.rings);
     neighbourhoodSeconds_ = start.neighbourhoodSeconds;
 

@@ -138,6 +138,9 @@ public:
     // Current positions of the distinct points, normalised frame (what rings() index).
     const PointList& normalizedPositions() const { return positions_; }
     const NormalizedCloud& cloud() const { return cloud_; }
+    // The distinct points as contraction started from them, normalised frame: the denoised
+    // copy when the cloud was denoised, else the cloud's points.
+    const PointList& startPositions() const { return denoisedStart_.empty() ? cloud_.points : denoisedStart_; }
     const OneRings& rings() const { return rings_; }
 
     const std::vector<IterationReport>& history() const { return history_; }
@@ -163,6 +166,7 @@ private:
     std::unique_ptr<GramMatrix> normalEquations_;  // LᵀL, pattern analysed once
     SparseSpdSolver solver_;
     PointList positions_;
+    PointList denoisedStart_;  // empty when the cloud was not denoised
     std::vector<double> initialExtents_, attractionWeights_;
     double initialExtentSum_ = 0.0;
     double contractionWeight_ = 0.0, initialContractionWeight_ = 0.0;

@@ -38,7 +38,8 @@ struct SheetCollapseReport {
     std::size_t points = 0;    // points moved
 };
 
-// `original`: the points' own positions; `contracted`: where contraction left them (the same
+// `original`: the points' positions where contraction started them (their own, or the
+// denoised copy of a noisy cloud); `contracted`: where contraction left them (the same
 // frame and order; the patches' points are moved in place); `rings`: their 1-rings; `radius`:
 // the thinning's ball radius, in that frame.
 SheetCollapseReport collapseSheets(const PointList& original, PointList& contracted, const OneRings& rings,
