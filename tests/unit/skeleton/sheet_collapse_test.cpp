@@ -1,7 +1,8 @@
 // Sheets onto their medial axes: a one-sided plate with two holes gives a loop around each
 // hole and no hub, also when a grazing scan samples it in bands, when it is sparse or
-// noisy; a disc one node at its centre; tubes, a thick closed plate, a narrow leaf and the
-// flat middle of a cup are left to contraction; the paper's pipeline does without.
+// noisy; a disc one node at its centre, and a noisy disc moves as a whole; tubes, a thick
+// closed plate, a narrow leaf and the flat middle of a cup are left to contraction; the
+// paper's pipeline does without.
 #include <pcskeleton/skeleton/sheet_collapse.h>
 #include <pcskeleton/curve_skeleton.h>
 #include "support/sampled_shapes.h"
@@ -107,6 +108,19 @@ TEST(SheetCollapse, ANoisyPlateIsJudgedAsDenoisedAndKeepsItsHoles) {
         const SkeletonTopology t = analyseTopology(r.skeleton);
         EXPECT_EQ(t.cycles, 2) << describe(t) << ", seed " << seed;
         EXPECT_EQ(t.components, 1) << describe(t) << ", seed " << seed;
+    }
+}
+
+// With 2% noise the sheet test passes on only part of a disc, even denoised. The points it
+// leaves out within the plate's own noise of its plane join the plate: left where
+// contraction put them, their 1-rings tied them to the points on the axis in a web of bones.
+// Before, 50% to 88% of these discs' points were moved.
+TEST(SheetCollapse, ANoisyDiscMovesAllItsPointsTogether) {
+    for (std::uint32_t seed : {1u, 2u, 6u, 7u}) {
+        const SkeletonResult r = computeCurveSkeleton(shapes::withNoise(disc(0.8, seed), 0.02, seed));
+        ASSERT_TRUE(r.quality.sheets);
+        EXPECT_EQ(r.quality.sheets->patches, 1) << "seed " << seed;
+        EXPECT_GE(r.quality.sheets->points, std::size_t(0.98 * kPoints)) << "seed " << seed;
     }
 }
 

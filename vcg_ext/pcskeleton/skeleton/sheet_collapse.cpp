@@ -43,8 +43,12 @@ constexpr double kParallelSheets = 0.85;      // |cos| of the angle between thei
 // points next to it are sheet points too, facing another way. Plates measure far below it,
 // the flat middle of a cupped leaf far above (docs/benchmarks.md, "The order of the input").
 constexpr double kCurvingOnShare = 0.5;
-// Points next to a patch within this many thinning radii of its plane join it.
+// Points next to a patch within this many thinning radii of its plane join it, or within
+// kBandDeviations standard deviations of its points' scatter off the plane where that is
+// wider: on a noisy plate, the points that noise took too far off for the sheet test. Four
+// deviations of a normal distribution leave out about one point in 16000.
 constexpr double kBandRadii = 0.5;
+constexpr double kBandDeviations = 4.0;
 // The grid's cell, in thinning radii. The grid is closed with a disc of kClosingRadii
 // thinning radii, or of kGapSpacings point spacings where that is wider: a hole survives
 // when such a disc fits in it, and narrower gaps are filled. A plate seen at a grazing angle
@@ -184,25 +188,30 @@ bool isOneLayerPlate(const PointList& original, const PointList& contracted, con
     return double(layered) <= kLayeredShare * double(probed);
 }
 
-// Adds to each patch the points next to it (through 1-rings, transitively) that are no sheet
-// point and lie within kBandRadii of its plane. A point next to two patches (the band along
-// a crease where two plates meet) joins the one whose plane it is nearer, whichever patch
-// comes first.
-void addBands(const PointList& original, const Neighbourhoods& n, const OneRings& rings,
+// Adds to each patch the points next to it (through 1-rings, transitively) that belong to no
+// patch and lie within its band: kBandRadii of its plane, or kBandDeviations of its points'
+// scatter off it where that is wider. A point next to two patches (the band along a crease
+// where two plates meet) joins the one whose plane it is nearer, whichever patch comes first.
+void addBands(const PointList& original, const OneRings& rings,
               const std::vector<LocalPlane>& planes, double radius, std::vector<std::vector<int>>& patches) {
     const std::size_t none = patches.size();
     std::vector<std::size_t> owner(original.size(), none);
     std::vector<double> offset(original.size(), INFINITY);
     std::vector<char> reached(original.size());
+    std::vector<char> inPlate(original.size(), 0);
+    for (const std::vector<int>& patch : patches) {
+        for (int i : patch) inPlate[std::size_t(i)] = 1;
+    }
     for (std::size_t p = 0; p < patches.size(); ++p) {
         std::fill(reached.begin(), reached.end(), 0);
         for (int i : patches[p]) reached[std::size_t(i)] = 1;
         std::vector<int> band = patches[p];
         const LocalPlane& plane = planes[p];
+        const double halfWidth = std::max(kBandRadii * radius, kBandDeviations * std::sqrt(plane.variances(0)));
         growAlongRings(rings, band, [&](std::size_t m) {
-            if (reached[m] || n.sheet[m]) return false;
+            if (reached[m] || inPlate[m]) return false;
             const double off = std::abs((original[m] - plane.centroid).dot(plane.axes.col(0)));
-            if (off > kBandRadii * radius) return false;
+            if (off > halfWidth) return false;
             reached[m] = 1;
             if (off < offset[m]) offset[m] = off, owner[m] = p;
             return true;
@@ -408,7 +417,7 @@ SheetCollapseReport collapseSheets(const PointList& original, PointList& contrac
         plates.push_back(std::move(patch));
         planes.push_back(plane);
     }
-    addBands(original, n, rings, planes, radius, plates);
+    addBands(original, rings, planes, radius, plates);
     for (std::size_t p = 0; p < plates.size(); ++p) {
         moveOntoAxis(original, index, plates[p], planes[p], radius, contracted);
         ++report.patches;

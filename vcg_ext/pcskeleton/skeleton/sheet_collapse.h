@@ -16,12 +16,12 @@
 //    (kWidePatchRadii both ways), when contraction left it as wide and flat as it was (a
 //    tube's strip narrows), and when it is one layer (a face of a thick closed plate has the
 //    other face across it, and contraction handles those).
-// 3. The patch takes in the points next to it that lie in its plane (the band along a crease
-//    where two plates meet goes to the plate whose plane is nearer), is drawn on a grid of
-//    half a thinning radius in its plane, closed over gaps into which a disc of 1.5
-//    thinning radii does not fit (the bands a grazing scan leaves between its lines among
-//    them), and thinned to its medial axis (the holes that remain kept); spurs shorter than
-//    two thinning radii are cut off.
+// 3. The patch takes in the points next to it that lie in its plane, as far off as its own
+//    points' noise reaches (the band along a crease where two plates meet goes to the plate
+//    whose plane is nearer), is drawn on a grid of half a thinning radius in its plane,
+//    closed over gaps into which a disc of 1.5 thinning radii does not fit (the bands a
+//    grazing scan leaves between its lines among them), and thinned to its medial axis (the
+//    holes that remain kept); spurs shorter than two thinning radii are cut off.
 // 4. Each of its points moves to the axis cell nearest it across the patch, keeping its
 //    place within its cell and its height above the plane.
 #pragma once
