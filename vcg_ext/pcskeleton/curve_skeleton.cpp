@@ -44,7 +44,7 @@ void thinAndEmbed(const NormalizedCloud& cloud, const PointList& start, const On
                                                           : std::numeric_limits<double>::infinity();
     // Flat sheets that contraction cannot thin, onto their medial axes first. Whether a sheet
     // is flat is judged where contraction started: noise that denoising took out of a plate
-    // would hide its plane (docs/benchmarks.md, "Noisy plates").
+    // would hide its plane (docs/benchmarks.md, "Noisy plates judged where contraction starts").
     PointList collapsed;
     std::optional<SheetCollapseReport> sheets;
     if (parameters.collapseSheets) {
