@@ -1,6 +1,6 @@
 // Re-centring: nodes of a half tube (one view) move onto its axis; nodes whose points
 // surround them stay at their centre; so do nodes of a curled sheet, whose curl changes
-// along it as a leaf's does.
+// along it as a leaf's does, or that is folded along its midrib.
 #include <pcskeleton/finishing/node_recentering.h>
 #include <pcskeleton/curve_skeleton.h>
 #include "support/sampled_shapes.h"
@@ -8,19 +8,20 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 
 namespace pcskeleton {
 namespace {
 
-// Three nodes along x at the centroids of the points of cross-sections around the x axis,
-// covering `sweep` radians of circles of the given radii (a tube of radius 0.2 by default).
-SkeletonGraph nodesOfAnArc(double sweep, PointList& points, const std::vector<double>& radii = {0.2, 0.2, 0.2}) {
+// Three nodes along x, each at the centroid of its 40 points; `across(n, k)` gives the
+// (y, z) of node n's k-th point.
+SkeletonGraph threeNodesAlongX(const std::function<Eigen::Vector2d(int, int)>& across, PointList& points) {
     SkeletonGraph g;
     for (int n = 0; n < 3; ++n) {
         Point centroid = Point::Zero();
         for (int k = 0; k < 40; ++k) {
-            const double angle = sweep * (k + 0.5) / 40, x = n + 0.01 * (k % 5);
-            points.emplace_back(x, radii[n] * std::cos(angle), radii[n] * std::sin(angle));
+            const Eigen::Vector2d q = across(n, k);
+            points.emplace_back(n + 0.01 * (k % 5), q.x(), q.y());
             g.pointNode.push_back(n);
             centroid += points.back();
         }
@@ -29,6 +30,28 @@ SkeletonGraph nodesOfAnArc(double sweep, PointList& points, const std::vector<do
     }
     g.edges = {{0, 1}, {1, 2}};
     return g;
+}
+
+// Cross-sections around the x axis covering `sweep` radians of circles of the given radii
+// (a tube of radius 0.2 by default).
+SkeletonGraph nodesOfAnArc(double sweep, PointList& points, const std::vector<double>& radii = {0.2, 0.2, 0.2}) {
+    return threeNodesAlongX(
+        [&](int n, int k) {
+            const double angle = sweep * (k + 0.5) / 40;
+            return Eigen::Vector2d(radii[n] * std::cos(angle), radii[n] * std::sin(angle));
+        },
+        points);
+}
+
+// A leaf folded along its midrib (the x axis): two flat wings of width 0.2, `opening`
+// radians apart, the same at every node.
+SkeletonGraph nodesOfAFold(double opening, PointList& points) {
+    return threeNodesAlongX(
+        [&](int, int k) {
+            const double along = 0.2 * ((k / 2) + 0.5) / 20, side = k % 2 ? 1.0 : -1.0;
+            return Eigen::Vector2d(side * along * std::sin(opening / 2), along * std::cos(opening / 2));
+        },
+        points);
 }
 
 // Three nodes on arcs of a third of a circle with the given radii, each alone a tube's
@@ -79,6 +102,19 @@ TEST(NodeRecentering, TwoCirclesThatAgreeByChanceOnACurledSheetDoNotMoveTheNode)
     // The curl tightens unevenly (as the tobacco leaf's tip): the last two circles agree,
     // but the middle one disagrees with the first, so it is no tube to confirm the last.
     expectCurledSheetLeftInPlace({0.2, 0.3, 0.34});
+}
+
+TEST(NodeRecentering, ALeafFoldedAlongItsMidribStaysOnTheLeaf) {
+    // A V of two straight wings 120 degrees apart, as a corn leaf's cross-section: each fits
+    // a circle over a third of it, and the neighbours' circles agree, as a tube's wall's do;
+    // but each half of the arc is straight, where a tube's curves as the whole does.
+    PointList points;
+    SkeletonGraph g = nodesOfAFold(2 * M_PI / 3, points);
+    const SkeletonGraph before = g;
+    const RecenteringReport report = recentreOneSidedNodes(g, points, DataSupport(points, 1.0));
+    EXPECT_EQ(report.recentredNodes, 0);
+    EXPECT_EQ(report.foldedSheets, 3);
+    EXPECT_EQ(g.nodes, before.nodes);
 }
 
 TEST(NodeRecentering, AWallNodeNoNeighbourConfirmsStays) {

@@ -24,6 +24,11 @@ constexpr double kLargestArcResultant = 0.9;
 // across its width) follows the curl, which changes from node to node. Two circles agree
 // when their radii are within this ratio (docs/benchmarks.md: chosen on the tuning half).
 constexpr double kLargestRadiusRatio = 1.2;
+// A tube's wall curves evenly: each half of its arc fits a circle close to the whole arc's.
+// The factors by which the two halves' radii differ from the whole's (each taken at least 1),
+// multiplied, stay below this on a tube seen from one side (docs/benchmarks.md: chosen on the
+// tuning half), while a leaf folded along its midrib has nearly straight halves.
+constexpr double kLargestCurvatureFactor = 4.0;
 
 struct Circle {
     Eigen::Vector2d centre;
@@ -49,9 +54,37 @@ bool fitCircle(const std::vector<Eigen::Vector2d>& q, Circle& circle) {
     return true;
 }
 
+// Whether the points across a bone curve evenly round `circle`, their fit: the arc split at
+// the middle of its angle round the circle's centre, each half fitted on its own.
+bool evenlyCurved(const std::vector<Eigen::Vector2d>& across, const Circle& circle) {
+    std::vector<double> angles;
+    for (const Eigen::Vector2d& q : across) angles.push_back(std::atan2(q.y() - circle.centre.y(), q.x() - circle.centre.x()));
+    std::vector<double> sorted = angles;
+    std::sort(sorted.begin(), sorted.end());
+    // The arc starts where the widest gap between neighbouring angles ends.
+    double start = sorted.front(), widest = sorted.front() + 2.0 * M_PI - sorted.back();
+    for (std::size_t i = 1; i < sorted.size(); ++i) {
+        if (sorted[i] - sorted[i - 1] > widest) widest = sorted[i] - sorted[i - 1], start = sorted[i];
+    }
+    const double middle = 0.5 * (2.0 * M_PI - widest);
+    std::vector<Eigen::Vector2d> halves[2];
+    for (std::size_t i = 0; i < across.size(); ++i) {
+        const double along = std::fmod(angles[i] - start + 4.0 * M_PI, 2.0 * M_PI);
+        halves[along < middle ? 0 : 1].push_back(across[i]);
+    }
+    double factor = 1.0;
+    for (const std::vector<Eigen::Vector2d>& half : halves) {
+        if (half.size() < 4) return true;  // any three points fit a circle: nothing to tell
+        Circle fitted;
+        if (!fitCircle(half, fitted)) return false;  // a straight half
+        factor *= std::max(fitted.radius / circle.radius, circle.radius / fitted.radius);
+    }
+    return factor <= kLargestCurvatureFactor;
+}
+
 // What a node's points across its bone look like.
 struct CrossSection {
-    enum Kind { kUnknown, kSurrounded, kWall, kSheet } kind = kUnknown;
+    enum Kind { kUnknown, kSurrounded, kWall, kFolded, kSheet } kind = kUnknown;
     double radius = 0.0;  // kWall: the circle's
     Point centre;         // kWall: the circle's centre
 };
@@ -79,7 +112,9 @@ CrossSection crossSection(int n, const SkeletonGraph& skeleton, const std::vecto
     const double arcResultant = side.norm() / double(across.size());
     if (arcResultant < kOneSided) section.kind = CrossSection::kSurrounded;  // the centroid is right
     else if (arcResultant > kLargestArcResultant) section.kind = CrossSection::kSheet;
-    else if (circle.centre.norm() <= circle.radius) {  // else the node would leave its tube
+    else if (circle.centre.norm() > circle.radius) return section;  // the node would leave its tube
+    else if (!evenlyCurved(across, circle)) section.kind = CrossSection::kFolded;
+    else {
         section.kind = CrossSection::kWall;
         section.radius = circle.radius;
         section.centre = nodes[n] + circle.centre.x() * u + circle.centre.y() * v;
@@ -98,12 +133,14 @@ RecenteringReport recentreOneSidedNodes(SkeletonGraph& skeleton, const PointList
     const std::vector<std::vector<int>> members = pointsOfNodes(skeleton);
     std::vector<CrossSection> sections(count);
     for (std::size_t n = 0; n < count; ++n) sections[n] = crossSection(int(n), skeleton, adjacent[n], members[n], points);
-    // A wall node is contradicted by a neighbouring wall whose circle disagrees, and confirmed
-    // by a neighbour that is a tube too: its points surround it, or its circle agrees and is
-    // not contradicted itself. Along a curled sheet the circles drift from node to node, so
-    // two of them may agree by chance, but not a whole stretch.
+    // A wall node is contradicted by a neighbouring wall whose circle disagrees or by a folded
+    // neighbour (a leaf runs on, and not each of its sections folds), and confirmed by a
+    // neighbour that is a tube too: its points surround it, or its circle agrees and is not
+    // contradicted itself. Along a curled sheet the circles drift from node to node, so two
+    // of them may agree by chance, but not a whole stretch.
     const auto contradicted = [&](std::size_t n) {
         for (int m : adjacent[n]) {
+            if (sections[m].kind == CrossSection::kFolded) return true;
             if (sections[m].kind == CrossSection::kWall && !circlesAgree(sections[n].radius, sections[m].radius))
                 return true;
         }
@@ -121,6 +158,7 @@ RecenteringReport recentreOneSidedNodes(SkeletonGraph& skeleton, const PointList
     double shifts = 0.0;
     for (std::size_t n = 0; n < count; ++n) {
         const CrossSection& section = sections[n];
+        report.foldedSheets += section.kind == CrossSection::kFolded;
         if (section.kind != CrossSection::kWall) continue;
         if (!confirmedByNeighbours(n)) {
             ++report.unlikeNeighbours;

@@ -6,7 +6,9 @@
 // when the fit is poor, or the points surround the node anyway, it stays where it is. So does
 // a node whose neighbours do not show a tube: a tube's radius changes slowly along its bone,
 // so a neighbour's circle agrees with the node's (or the neighbour's points surround it),
-// while the circle fitted across a curled sheet (a leaf) follows the curl.
+// while the circle fitted across a curled sheet (a leaf) follows the curl. A leaf folded along
+// its midrib fits a circle too, but its two wings are nearly straight: a tube's wall curves
+// as evenly in each half of its arc as in the whole.
 #pragma once
 
 #include "pcskeleton/finishing/data_support.h"
@@ -22,6 +24,7 @@ struct RecenteringReport {
     double meanShift = 0.0;  // input units
     int refused = 0;         // moves that would have taken a node away from its data (data_support.h)
     int unlikeNeighbours = 0;  // nodes left in place: their neighbours do not show a tube (a curled leaf)
+    int foldedSheets = 0;      // nodes left in place: their arc does not curve evenly (a leaf folded along its midrib)
 };
 
 // `points` are the input points in the input's frame, `skeleton.pointNode` their nodes.

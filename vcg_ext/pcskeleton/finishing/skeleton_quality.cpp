@@ -281,6 +281,9 @@ std::string describeFindings(const SkeletonQuality& q) {
         if (q.recentering->unlikeNeighbours)
             s << "; " << counted(std::size_t(q.recentering->unlikeNeighbours), "node", "nodes")
               << " left in place (curled like a leaf: no neighbour shows the same tube)";
+        if (q.recentering->foldedSheets)
+            s << "; " << counted(std::size_t(q.recentering->foldedSheets), "node", "nodes")
+              << " left in place (folded like a leaf: the points across the bone do not curve evenly)";
         s << refusals(q.recentering->refused, "move") << ".\n";
     }
     s << "Refinement: " << (q.refinement ? describe(*q.refinement) : std::string("off")) << ".\n";
