@@ -51,6 +51,21 @@ TEST(BadInput, CollinearPoints) {
     EXPECT_NE(errorOf(line).find("straight line"), std::string::npos);
 }
 
+// Two spheres of radius 1 a hundred million apart: to the precision of the cloud's extent
+// they are two points on a line, refused as such, and the message says why the points are
+// no line to the eye. An exact line gets the plain message.
+TEST(BadInput, PartsVeryFarApartForTheirSizeAreALineAndSaySo) {
+    PointList parts = shapes::sphere(500, 1.0);
+    for (const Point& p : shapes::sphere(500, 1.0)) parts.push_back(p + Point(1e8, 0, 0));
+    const std::string error = errorOf(parts);
+    EXPECT_NE(error.find("straight line (none farther from it than"), std::string::npos) << error;
+    EXPECT_NE(error.find("parts far apart"), std::string::npos) << error;
+
+    PointList line;
+    for (int i = 0; i < 100; ++i) line.emplace_back(i, 0, 0);
+    EXPECT_EQ(errorOf(line).find("farther"), std::string::npos) << errorOf(line);
+}
+
 TEST(BadInput, AllPointsIdentical) {
     const PointList same(50, Point(1, 2, 3));
     EXPECT_NE(errorOf(same).find("1 distinct points (50 with duplicates)"), std::string::npos) << errorOf(same);

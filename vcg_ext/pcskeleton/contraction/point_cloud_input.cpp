@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <iomanip>
 #include <numeric>
 #include <sstream>
 
@@ -75,11 +76,27 @@ void rejectCollinear(const PointList& points) {
     for (const Point& p : points) covariance += (p - mean) * (p - mean).transpose();
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(covariance);
     const Eigen::Vector3d& lambda = eigen.eigenvalues();  // ascending
-    if (lambda(1) <= 1e-12 * lambda(2)) {
-        throw InvalidInput(
-            "All points lie on one straight line: such a cloud is already a curve and has "
-            "no surface to contract.");
+    if (lambda(1) > 1e-12 * lambda(2)) return;
+    // Within the precision of the coordinates, or not quite: say which, since a cloud of
+    // parts very far apart for their size (scans of separate objects in one frame) is such a
+    // line too, and its points are no line to the eye.
+    const Point axis = eigen.eigenvectors().col(2);
+    double farthest = 0.0, low = 0.0, high = 0.0;
+    for (const Point& p : points) {
+        const Point offset = p - mean;
+        const double along = offset.dot(axis);
+        low = std::min(low, along), high = std::max(high, along);
+        farthest = std::max(farthest, (offset - along * axis).norm());
     }
+    std::ostringstream msg;
+    msg << "All points lie on one straight line";
+    if (farthest > 0.0 && high > low) {
+        msg << " (none farther from it than " << std::setprecision(2) << farthest / (high - low)
+            << " of its length: a needle, or parts far apart for their size such as separate scans in "
+               "one frame; give each part on its own)";
+    }
+    msg << ": such a cloud is already a curve and has no surface to contract.";
+    throw InvalidInput(msg.str());
 }
 
 // A 64-bit hash of a point's exact coordinates (-0 and +0 alike, as == sees them).
