@@ -174,5 +174,5 @@ TEST_F(ReconstructionFilterTest, RefusesLayersThatCannotWork) {
     MeshModel* far = document.addNewMesh("", "far", false);
     vcg::tri::Append<CMeshO, CMeshO>::MeshCopy(far->cm, skeleton->cm);
     for (auto& v : far->cm.vert) v.P() += vcg::Point3f(20, 0, 0);
-    EXPECT_NE(reconstructionError(scan, far).find("does not describe this point layer"), std::string::npos);
+    EXPECT_NE(reconstructionError(scan, far).find("does not describe these points"), std::string::npos);
 }

@@ -305,8 +305,8 @@ TEST(Reconstruction, BadInputIsRefusedWithTheReason) {
     expectRefusal(scan, flat, "24 of 24 skeleton nodes have no radius");
     SkeletonGraph elsewhere = ringSkeleton();
     for (Point& p : elsewhere.nodes) p += Point(10, 0, 0);
-    expectRefusal(scan, elsewhere, "the skeleton does not describe this point layer");
-    expectRefusal(PointList{}, ringSkeleton(), "The point layer is empty");
+    expectRefusal(scan, elsewhere, "the skeleton does not describe these points");
+    expectRefusal(PointList{}, ringSkeleton(), "The cloud is empty");
     PointList withNaN = scan;
     withNaN[3].x() = std::nan("");
     expectRefusal(withNaN, ringSkeleton(), "NaN or infinite");

@@ -223,7 +223,7 @@ void rejectUnrepresentableScale(const PointList& points, const std::string& what
 
 NormalizedCloud normalizeCloud(const PointList& input, std::size_t minimumUniquePoints,
                                const OutlierParameters& outliers) {
-    if (input.empty()) throw InvalidInput("The point layer is empty.");
+    if (input.empty()) throw InvalidInput("The cloud is empty: it has no points.");
     rejectNonFinite(input, "points", Remedy::take(Step::RemoveNonFinitePoints));
     rejectUnrepresentableScale(input, "points");
 

@@ -64,19 +64,19 @@ void refuseSkeletonBeyondPoints(const PointList& points, const SkeletonGraph& sk
     if (far > 0) {
         text << far << " of " << skeleton.nodeCount() << " skeleton nodes lie far outside the points (first: node "
              << firstFar << "; the farthest " << farthest
-             << " bounding-box diagonals of the points away): the skeleton does not describe this point layer.";
+             << " bounding-box diagonals of the points away): the skeleton does not describe these points.";
         throw InvalidInput(text.str(), {Remedy::take(Step::DeleteNodes), Remedy::take(Step::ComputeSkeleton)});
     }
     if (wide > 0) {
         text << wide << " of " << skeleton.nodeCount() << " skeleton nodes have a radius larger than the points' "
              << "bounding-box diagonal (first: node " << firstWide << "; the largest " << widest
-             << " diagonals): the radii are not this point layer's.";
+             << " diagonals): the radii are not these points'.";
         throw InvalidInput(text.str(), {Remedy::take(Step::SetNodeRadii), Remedy::take(Step::ComputeSkeleton)});
     }
 }
 
 void checkInputs(const PointList& points, const SkeletonGraph& skeleton) {
-    if (points.empty()) throw InvalidInput("The point layer is empty: reconstruction needs the surface samples.");
+    if (points.empty()) throw InvalidInput("The cloud is empty: reconstruction needs the surface samples.");
     rejectNonFinite(points, "points", Remedy::take(Step::RemoveNonFinitePoints));
     if (skeleton.nodes.empty())
         throw InvalidInput("The skeleton has no nodes.", {Remedy::take(Step::ComputeSkeleton)});
@@ -116,7 +116,7 @@ std::size_t occupiedCells(const PointList& framePoints, const FieldGrid& grid) {
 void refuseTooFewDistinctPoints(const PointList& framePoints, const FieldGrid& grid) {
     const std::size_t cells = occupiedCells(framePoints, grid);
     if (cells >= kMinimumOccupiedCells) return;
-    throw InvalidInput("The point layer has " + std::to_string(cells) + " distinct point" + (cells == 1 ? "" : "s") +
+    throw InvalidInput("The cloud has " + std::to_string(cells) + " distinct point" + (cells == 1 ? "" : "s") +
                        " at the grid's resolution (" + std::to_string(framePoints.size()) +
                        " points in all); the surface needs at least " + std::to_string(kMinimumOccupiedCells) +
                        " to be placed. Use the scan the skeleton was computed from as the points.");
@@ -289,7 +289,7 @@ Reconstruction reconstructFromSkeleton(const PointList& points, const SkeletonGr
     farText << int(std::round(100 * farShare)) << "% of the points are farther than K = " << outsideRadii
             << " radii from the skeleton";
     if (farShare > 0.5)
-        throw InvalidInput(farText.str() + ": the skeleton does not describe this point layer.",
+        throw InvalidInput(farText.str() + ": the skeleton does not describe these points.",
                            {Remedy::take(Step::ComputeSkeleton), Remedy::take(Step::SetNodeRadii),
                             Remedy::raise(Parameter::OutsideDistance)});
     refuseTooFewDistinctPoints(framePoints, grid);
