@@ -77,9 +77,11 @@ void rejectCollinear(const PointList& points) {
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(covariance);
     const Eigen::Vector3d& lambda = eigen.eigenvalues();  // ascending
     if (lambda(1) > 1e-12 * lambda(2)) return;
-    // Within the precision of the coordinates, or not quite: say which, since a cloud of
-    // parts very far apart for their size (scans of separate objects in one frame) is such a
-    // line too, and its points are no line to the eye.
+    // Off the line by more than rounding: say how far, since a cloud of parts very far apart
+    // for their size (scans of separate objects in one frame) is such a line too, though
+    // its points are no line to the eye. (Coordinates written in single precision are off a
+    // line by as much, so the message cannot tell which.)
+    constexpr double kRounding = 1e-12;
     const Point axis = eigen.eigenvectors().col(2);
     double farthest = 0.0, low = 0.0, high = 0.0;
     for (const Point& p : points) {
@@ -90,12 +92,13 @@ void rejectCollinear(const PointList& points) {
     }
     std::ostringstream msg;
     msg << "All points lie on one straight line";
-    if (farthest > 0.0 && high > low) {
-        msg << " (none farther from it than " << std::setprecision(2) << farthest / (high - low)
-            << " of its length: a needle, or parts far apart for their size such as separate scans in "
-               "one frame; give each part on its own)";
-    }
+    const bool offTheLine = high > low && farthest > kRounding * (high - low);
+    if (offTheLine) msg << ", within " << std::setprecision(2) << farthest / (high - low) << " of its length";
     msg << ": such a cloud is already a curve and has no surface to contract.";
+    if (offTheLine) {
+        msg << " If the points are no line to the eye, the cloud holds parts very far apart for their size "
+               "(separate scans in one frame?): give each part on its own.";
+    }
     throw InvalidInput(msg.str());
 }
 
